@@ -1,0 +1,81 @@
+# generate_robot_dynamics(): generate robot-specific dynamics C++ from a URDF at build time.
+#
+#   find_package(rbdgen CONFIG REQUIRED)
+#   generate_robot_dynamics(TARGET panda_dynamics URDF robots/panda.urdf
+#                           [NAMESPACE panda] [FLOATING_BASE] [BASE_LINK link] [OUTPUT_DIR dir])
+#   target_link_libraries(my_controller PRIVATE panda_dynamics)
+#   // #include <panda/dynamics.hpp>
+#
+# Defines the INTERFACE library TARGET (include directory + Eigen). The header
+# <OUTPUT_DIR>/<NAMESPACE>/dynamics.hpp is regenerated when the URDF or the rbdgen executable
+# (whose templates are built in) changes, and only then. NAMESPACE defaults to the URDF robot name
+# made into an identifier; OUTPUT_DIR to ${CMAKE_CURRENT_BINARY_DIR}/<TARGET>.
+include_guard(GLOBAL)
+
+function(_rbdgen_identifier out text)
+  string(REGEX REPLACE "[^A-Za-z0-9]" "_" id "${text}")
+  string(REGEX REPLACE "__+" "_" id "${id}")
+  string(REGEX REPLACE "_+$" "" id "${id}")
+  if(id STREQUAL "" OR id MATCHES "^[0-9]")
+    set(id "_${id}")
+  endif()
+  if(id MATCHES "^_[A-Z]")
+    set(id "x${id}")
+  endif()
+  set(${out} "${id}" PARENT_SCOPE)
+endfunction()
+
+function(generate_robot_dynamics)
+  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE" "TARGET;URDF;NAMESPACE;BASE_LINK;OUTPUT_DIR" "")
+  if(arg_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "generate_robot_dynamics: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
+  endif()
+  if(NOT arg_TARGET OR NOT arg_URDF)
+    message(FATAL_ERROR "generate_robot_dynamics: TARGET and URDF are required")
+  endif()
+  get_filename_component(urdf "${arg_URDF}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+  if(NOT EXISTS "${urdf}")
+    message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): URDF '${urdf}' does not exist")
+  endif()
+  if(arg_NAMESPACE)
+    set(ns "${arg_NAMESPACE}")
+  else()
+    file(READ "${urdf}" text)
+    if(NOT text MATCHES "<robot[^>]*name=\"([^\"]*)\"")
+      message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): ${urdf}: no <robot name=...>; give NAMESPACE")
+    endif()
+    _rbdgen_identifier(ns "${CMAKE_MATCH_1}")
+  endif()
+  if(arg_OUTPUT_DIR)
+    get_filename_component(outdir "${arg_OUTPUT_DIR}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_BINARY_DIR}")
+  else()
+    set(outdir "${CMAKE_CURRENT_BINARY_DIR}/${arg_TARGET}")
+  endif()
+  set(header "${outdir}/${ns}/dynamics.hpp")
+
+  set(options --out "${outdir}" --namespace "${ns}")
+  if(arg_FLOATING_BASE)
+    list(APPEND options --floating-base)
+  endif()
+  if(arg_BASE_LINK)
+    list(APPEND options --base-link "${arg_BASE_LINK}")
+  endif()
+  if(TARGET rbdgen::rbdgen)
+    set(tool rbdgen::rbdgen)
+  else()
+    message(FATAL_ERROR "generate_robot_dynamics: no rbdgen::rbdgen target (use find_package(rbdgen))")
+  endif()
+
+  add_custom_command(OUTPUT "${header}"
+    COMMAND ${tool} generate "${urdf}" ${options}
+    DEPENDS "${urdf}" ${tool}
+    COMMENT "rbdgen: ${arg_URDF} -> ${ns}/dynamics.hpp"
+    VERBATIM)
+  add_custom_target(${arg_TARGET}_generate DEPENDS "${header}")
+  add_library(${arg_TARGET} INTERFACE)
+  add_dependencies(${arg_TARGET} ${arg_TARGET}_generate)
+  target_include_directories(${arg_TARGET} INTERFACE "$<BUILD_INTERFACE:${outdir}>")
+  target_link_libraries(${arg_TARGET} INTERFACE Eigen3::Eigen)
+  target_compile_features(${arg_TARGET} INTERFACE cxx_std_17)
+  set_target_properties(${arg_TARGET} PROPERTIES RBDGEN_HEADER "${header}" RBDGEN_NAMESPACE "${ns}")
+endfunction()

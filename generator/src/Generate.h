@@ -1,0 +1,49 @@
+#pragma once
+// Generation from a URDF: load (loader/), build the runtime MultiBody, fold it into a RobotModel,
+// emit the header from templates/, write it atomically.
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <rbd/parsers/urdf.h>
+
+#include "model/RobotModel.h"
+
+namespace rbdgen
+{
+
+struct GenerateOptions
+{
+  std::string urdf;          ///< input URDF path
+  std::string outDir;        ///< output directory; the header goes to outDir/<namespace>/dynamics.hpp
+  std::string ns;            ///< C++ namespace (default: the sanitised robot name)
+  bool floatingBase = false;
+  std::string baseLink;      ///< default: the URDF root link
+};
+
+struct GeneratedFile
+{
+  std::string path;     ///< relative to outDir
+  std::string content;
+};
+
+/// The text of every generated file, in memory (nothing written).
+std::vector<GeneratedFile> generateFiles(const GenerateOptions & opt);
+
+/// Build the generator model of a loaded robot (link frames as in the URDF).
+RobotModel robotModelFromUrdf(const rbd::parsers::ParserResult & robot);
+
+/// Emit the header for a model (ns: namespace, sourceName and sourceHash for provenance).
+std::string emitHeader(const RobotModel & rm, const std::string & ns, const std::string & sourceName,
+                       const std::string & sourceHash, const std::string & options);
+
+/// Write files under outDir: each goes to a temporary file first and is renamed into place only
+/// once all were written; a file whose content did not change is left untouched (mtime kept).
+/// Returns the paths written or kept.
+std::vector<std::string> writeFiles(const std::string & outDir, const std::vector<GeneratedFile> & files);
+
+/// Embedded templates (generated from templates/ at build time).
+const std::map<std::string, std::string> & embeddedTemplates();
+
+} // namespace rbdgen

@@ -1,0 +1,209 @@
+#include "Expr.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <cctype>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace rbdgen::cg
+{
+
+Scalar Scalar::constant(double v)
+{
+  Scalar s;
+  s.isConst_ = true;
+  s.value_ = v == 0.0 ? 0.0 : v; // no negative zero in emitted text
+  return s;
+}
+
+Scalar Scalar::var(std::string name)
+{
+  Scalar s;
+  s.isConst_ = false;
+  s.name_ = std::move(name);
+  return s;
+}
+
+std::string Block::literal(double v)
+{
+  if(v == std::floor(v) && std::abs(v) < 1e15) return "S(" + std::to_string(static_cast<long long>(v)) + ")";
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  // Shortest text that round-trips, for readability.
+  for(int p = 1; p <= 17; ++p)
+  {
+    char s[40];
+    std::snprintf(s, sizeof s, "%.*g", p, v);
+    if(std::strtod(s, nullptr) == v)
+    {
+      std::snprintf(buf, sizeof buf, "%s", s);
+      break;
+    }
+  }
+  return std::string("S(") + buf + ")";
+}
+
+std::string Block::text(const Scalar & s)
+{
+  return s.isConst() ? literal(s.value()) : s.name();
+}
+
+namespace
+{
+
+// Fold constant factors into the coefficient and drop zero terms; merge a lone constant.
+std::vector<Term> normalise(const std::vector<Term> & terms, double & constant)
+{
+  std::vector<Term> out;
+  constant = 0.0;
+  for(const Term & t : terms)
+  {
+    Term n;
+    n.coef = t.coef;
+    for(const Scalar & f : t.factors)
+    {
+      if(f.isConst()) n.coef *= f.value();
+      else n.factors.push_back(f);
+    }
+    if(n.coef == 0.0) continue;
+    if(n.factors.empty()) constant += n.coef;
+    else out.push_back(n);
+  }
+  return out;
+}
+
+template<typename F>
+void forEachIdentifier(const std::string & text, F && f)
+{
+  auto isStart = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+  auto isPart = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for(std::size_t i = 0; i < text.size();)
+  {
+    if(isStart(text[i]) && (i == 0 || !isPart(text[i - 1])))
+    {
+      std::size_t j = i;
+      while(j < text.size() && isPart(text[j])) ++j;
+      f(text.substr(i, j - i));
+      i = j;
+    }
+    else ++i;
+  }
+}
+
+} // namespace
+
+std::string Block::text(const std::vector<Term> & terms)
+{
+  double c = 0.0;
+  const std::vector<Term> ts = normalise(terms, c);
+  std::string s;
+  for(const Term & t : ts)
+  {
+    std::string factors;
+    for(const Scalar & f : t.factors) factors += (factors.empty() ? "" : " * ") + f.name();
+    const double a = std::abs(t.coef);
+    const std::string mag = a == 1.0 ? factors : literal(a) + " * " + factors;
+    if(s.empty()) s = (t.coef < 0 ? "-" : "") + mag;
+    else s += (t.coef < 0 ? " - " : " + ") + mag;
+  }
+  if(c != 0.0 || s.empty())
+  {
+    if(s.empty()) s = literal(c);
+    else s += (c < 0 ? " - " : " + ") + literal(std::abs(c));
+  }
+  return s;
+}
+
+std::string Block::fresh(const std::string & hint)
+{
+  std::string base = hint.empty() ? std::string("t") : hint;
+  std::string name = base;
+  int k = 1;
+  while(std::find(taken_.begin(), taken_.end(), name) != taken_.end()) name = base + "_" + std::to_string(k++);
+  taken_.push_back(name);
+  return name;
+}
+
+Scalar Block::sum(const std::vector<Term> & terms, const std::string & hint)
+{
+  double c = 0.0;
+  const std::vector<Term> ts = normalise(terms, c);
+  if(ts.empty()) return Scalar::constant(c);
+  if(ts.size() == 1 && c == 0.0 && ts[0].coef == 1.0 && ts[0].factors.size() == 1) return ts[0].factors[0];
+  for(const Term & t : ts)
+  {
+    mults_ += static_cast<long>(t.factors.size()) - 1 + (std::abs(t.coef) == 1.0 ? 0 : 1);
+  }
+  adds_ += static_cast<long>(ts.size()) - 1 + (c != 0.0 ? 1 : 0);
+  const std::string name = fresh(hint);
+  lines_.push_back("const S " + name + " = " + text(ts) + (c != 0.0 ? (c < 0 ? " - " : " + ") + literal(std::abs(c)) : "") +
+                   ";");
+  return Scalar::var(name);
+}
+
+Scalar Block::def(const std::string & rhs, const std::string & hint)
+{
+  ++calls_;
+  const std::string name = fresh(hint);
+  lines_.push_back("const S " + name + " = " + rhs + ";");
+  return Scalar::var(name);
+}
+
+void Block::line(const std::string & text)
+{
+  lines_.push_back(text);
+}
+
+std::string Block::str(const std::string & indent) const
+{
+  // Dead-code elimination: a `const S x = ...;` statement is kept when x is read by a kept line.
+  std::vector<bool> keep(lines_.size(), true);
+  std::set<std::string> used;
+  for(std::size_t k = lines_.size(); k-- > 0;)
+  {
+    const std::string & l = lines_[k];
+    std::string rhs = l;
+    if(l.rfind("const S ", 0) == 0)
+    {
+      const auto eq = l.find(" = ");
+      const std::string name = l.substr(8, eq - 8);
+      if(!used.count(name))
+      {
+        keep[k] = false;
+        continue;
+      }
+      rhs = l.substr(eq + 3);
+    }
+    forEachIdentifier(rhs, [&](std::string id) { used.insert(std::move(id)); });
+  }
+  std::string out;
+  for(std::size_t k = 0; k < lines_.size(); ++k)
+    if(keep[k]) out += indent + lines_[k] + "\n";
+  return out;
+}
+
+Scalar add(Block & b, const Scalar & x, const Scalar & y, const std::string & hint)
+{
+  return b.sum({Term{1.0, {x}}, Term{1.0, {y}}}, hint);
+}
+
+Scalar sub(Block & b, const Scalar & x, const Scalar & y, const std::string & hint)
+{
+  return b.sum({Term{1.0, {x}}, Term{-1.0, {y}}}, hint);
+}
+
+Scalar mul(Block & b, const Scalar & x, const Scalar & y, const std::string & hint)
+{
+  return b.sum({Term{1.0, {x, y}}}, hint);
+}
+
+Scalar neg(Block & b, const Scalar & x, const std::string & hint)
+{
+  return b.sum({Term{-1.0, {x}}}, hint);
+}
+
+} // namespace rbdgen::cg

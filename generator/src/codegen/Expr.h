@@ -1,0 +1,78 @@
+#pragma once
+// Symbolic scalars for code emission. A Scalar is either a constant known at generation time or
+// the name of a local in the emitted code. Every operation folds constants (0, ±1, literals), so a
+// joint about z, an identity fixed transform or a zero centre of mass cost nothing at run time:
+// axis specialisation and constant folding fall out of the arithmetic.
+
+#include <string>
+#include <vector>
+
+namespace rbdgen::cg
+{
+
+class Scalar
+{
+public:
+  Scalar() = default;
+  static Scalar constant(double v);
+  static Scalar var(std::string name);
+
+  bool isConst() const { return isConst_; }
+  double value() const { return value_; }
+  const std::string & name() const { return name_; }
+  bool isZero() const { return isConst_ && value_ == 0.0; }
+
+private:
+  bool isConst_ = true;
+  double value_ = 0.0;
+  std::string name_;
+};
+
+/// c * f1 * f2 * ... (constant factors are folded into c).
+struct Term
+{
+  double coef = 1.0;
+  std::vector<Scalar> factors;
+};
+
+/// A function body being emitted: a list of `const S name = expr;` statements.
+class Block
+{
+public:
+  /// A statement `const S <fresh name> = sum of terms;`, or a constant / an existing name when
+  /// the sum folds to one. Names are `<hint>` (made unique with a suffix when taken).
+  Scalar sum(const std::vector<Term> & terms, const std::string & hint);
+  /// A statement with a verbatim right-hand side (e.g. `std::sin(q[3])`).
+  Scalar def(const std::string & rhs, const std::string & hint);
+  /// A verbatim line (comments, output assignments).
+  void line(const std::string & text);
+  void comment(const std::string & text) { line("// " + text); }
+
+  /// C++ text of a scalar: a name or a literal `S(0.25)`.
+  static std::string text(const Scalar & s);
+  /// C++ text of a sum of terms (no statement), "S(0)" when empty.
+  static std::string text(const std::vector<Term> & terms);
+  static std::string literal(double v);
+
+  const std::vector<std::string> & lines() const { return lines_; }
+  /// Statements joined with the given indentation; unused locals are removed first.
+  std::string str(const std::string & indent) const;
+  /// Floating-point operations emitted so far (multiplications, additions, other calls).
+  long mults() const { return mults_; }
+  long adds() const { return adds_; }
+  long calls() const { return calls_; }
+
+private:
+  std::string fresh(const std::string & hint);
+  std::vector<std::string> lines_;
+  std::vector<std::string> taken_;
+  long mults_ = 0, adds_ = 0, calls_ = 0;
+};
+
+/// Scalar helpers built on Block::sum.
+Scalar add(Block & b, const Scalar & x, const Scalar & y, const std::string & hint);
+Scalar sub(Block & b, const Scalar & x, const Scalar & y, const std::string & hint);
+Scalar mul(Block & b, const Scalar & x, const Scalar & y, const std::string & hint);
+Scalar neg(Block & b, const Scalar & x, const std::string & hint);
+
+} // namespace rbdgen::cg

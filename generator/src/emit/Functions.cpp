@@ -1,0 +1,329 @@
+#include "Functions.h"
+
+#include <fmt/format.h>
+
+#include "Kernels.h"
+
+namespace rbdgen::emit
+{
+namespace
+{
+
+const std::string kIndent = "  ";
+
+EmittedBody finish(const Block & b)
+{
+  return {b.str(kIndent), OpCount{b.mults(), b.adds(), b.calls()}};
+}
+
+// Write a symbolic pose into `<dst>.rotation` / `<dst>.translation`.
+void writePose(Block & b, const std::string & dst, const Xform & X)
+{
+  for(int r = 0; r < 3; ++r)
+    for(int c = 0; c < 3; ++c) b.line(fmt::format("{}.rotation({}, {}) = {};", dst, r, c, Block::text(X.E(r, c))));
+  for(int i = 0; i < 3; ++i) b.line(fmt::format("{}.translation({}) = {};", dst, i, Block::text(X.r[i])));
+}
+
+// World poses of the links: X_0_link = X_owner_link X_0_owner.
+void writeLinkPoses(Block & b, const RobotModel & rm, const std::vector<Xform> & X0, const std::string & dst)
+{
+  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
+  {
+    const BodyFrame & bf = rm.bodies[i];
+    b.comment(fmt::format("link '{}'", bf.name));
+    const Xform C = constantXform(bf.X_owner_link);
+    const Xform X = bf.owner < 0 ? C : compose(b, C, X0[static_cast<std::size_t>(bf.owner)], "X0_" + bf.ident);
+    writePose(b, fmt::format("{}[{}]", dst, i), X);
+  }
+}
+
+// Reads the world pose of moving frame k back from `kin.frame[k]`.
+Xform kinFrame(int k)
+{
+  Xform X;
+  for(int r = 0; r < 3; ++r)
+    for(int c = 0; c < 3; ++c) X.E(r, c) = Scalar::var(fmt::format("kin.frame[{}].rotation({}, {})", k, r, c));
+  for(int i = 0; i < 3; ++i) X.r[i] = Scalar::var(fmt::format("kin.frame[{}].translation({})", k, i));
+  return X;
+}
+
+} // namespace
+
+EmittedBody forwardKinematicsBody(const RobotModel & rm)
+{
+  Block b;
+  const auto K = emitKernels(b, rm, "q");
+  const auto X0 = emitWorldPoses(b, rm, K);
+  writeLinkPoses(b, rm, X0, "res");
+  return finish(b);
+}
+
+EmittedBody kinematicsBody(const RobotModel & rm)
+{
+  Block b;
+  const auto K = emitKernels(b, rm, "q");
+  const auto X0 = emitWorldPoses(b, rm, K);
+  for(std::size_t k = 0; k < rm.joints.size(); ++k) writePose(b, fmt::format("kin.frame[{}]", k), X0[k]);
+  writeLinkPoses(b, rm, X0, "kin.pose");
+  return finish(b);
+}
+
+EmittedBody rneaBody(const RobotModel & rm, const RneaTerms & terms)
+{
+  Block b;
+  const auto K = emitKernels(b, rm, "q");
+  std::vector<Xform> X0;
+  if(terms.externalForces) X0 = emitWorldPoses(b, rm, K);
+  const std::size_t n = rm.joints.size();
+  std::vector<Motion> v(n), a(n);
+  std::vector<Force> f(n);
+  // a_0 = [0; g]: gravity as a fictitious upward acceleration of the world (RBDyn).
+  Motion a0 = Motion::zero();
+  if(terms.gravity) a0.v[2] = Scalar::constant(9.81);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    const std::string t = mj.tag;
+    b.comment(fmt::format("{} forward pass: v = X_p_i v_p + S alpha, a = X_p_i a_p + S alphaD + v x S alpha", t));
+    const Motion vJ = terms.velocity ? jointMotion(b, K[k], "alpha", mj.vIndex, t + "_vJ") : Motion::zero();
+    const Motion aJ = terms.acceleration ? jointMotion(b, K[k], "alphaD", mj.vIndex, t + "_aJ") : Motion::zero();
+    const Motion vp = mj.parent < 0 ? Motion::zero() : v[static_cast<std::size_t>(mj.parent)];
+    const Motion ap = mj.parent < 0 ? a0 : a[static_cast<std::size_t>(mj.parent)];
+    v[k] = add(b, toChild(b, mj, K[k], vp, t + "_Xv"), vJ, t + "_v");
+    a[k] = add(b, add(b, toChild(b, mj, K[k], ap, t + "_Xa"), aJ, t + "_aa"), cross(b, v[k], vJ, t + "_vxvJ"),
+               t + "_a");
+    // f = I a + v x* I v
+    const Inertia I = constantInertia(mj.inertia.mass(), mj.inertia.momentum(), mj.inertia.inertia());
+    f[k] = add(b, apply(b, I, a[k], t + "_Ia"), crossDual(b, v[k], apply(b, I, v[k], t + "_Iv"), t + "_vxIv"), t + "_f");
+  }
+  if(terms.externalForces)
+  {
+    b.comment("external wrenches: f_k -= X_0_k^* fext (world coordinates at the world origin)");
+    for(std::size_t i = 0; i < rm.bodies.size(); ++i)
+    {
+      const int o = rm.bodies[i].owner;
+      if(o < 0) continue;
+      Force fe;
+      for(int c = 0; c < 3; ++c)
+      {
+        fe.n[c] = Scalar::var(fmt::format("fext[{}][{}]", i, c));
+        fe.f[c] = Scalar::var(fmt::format("fext[{}][{}]", i, c + 3));
+      }
+      const auto ko = static_cast<std::size_t>(o);
+      f[ko] = sub(b, f[ko], dualApply(b, X0[ko], fe, fmt::format("{}_fx{}", rm.joints[ko].tag, i)),
+                  rm.joints[ko].tag + "_fe");
+    }
+  }
+  for(std::size_t k = n; k-- > 0;)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    b.comment(fmt::format("{} backward pass: tau = S^T f, f_p += X_p_i^T f", mj.tag));
+    const auto tau = projectForce(b, K[k], f[k], mj.tag + "_tau");
+    for(int d = 0; d < mj.nv; ++d)
+      b.line(fmt::format("tau[{}] = {};", mj.vIndex + d, Block::text(tau[static_cast<std::size_t>(d)])));
+    if(mj.parent >= 0)
+    {
+      const auto p = static_cast<std::size_t>(mj.parent);
+      f[p] = add(b, f[p], toParent(b, mj, K[k], f[k], mj.tag + "_fp"), rm.joints[p].tag + "_f");
+    }
+  }
+  return finish(b);
+}
+
+namespace
+{
+
+// Composite rigid-body algorithm on symbols: H (lower triangle, by dof index) from kernels.
+std::vector<std::vector<Scalar>> emitCrba(Block & b, const RobotModel & rm, const std::vector<JointKernel> & K)
+{
+  const std::size_t n = rm.joints.size();
+  std::vector<Inertia> Ic(n);
+  for(std::size_t k = 0; k < n; ++k)
+    Ic[k] = constantInertia(rm.joints[k].inertia.mass(), rm.joints[k].inertia.momentum(), rm.joints[k].inertia.inertia());
+  // Ic_p += X_p_i^T Ic_i X_p_i, leaves to root.
+  for(std::size_t k = n; k-- > 0;)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    if(mj.parent < 0) continue;
+    b.comment(fmt::format("{}: composite inertia into its parent", mj.tag));
+    const Inertia Ij = transApply(b, K[k].Xj, Ic[k], mj.tag + "_Icj");
+    const Inertia Ip = transApply(b, constantXform(mj.Xt), Ij, mj.tag + "_Icp");
+    const auto p = static_cast<std::size_t>(mj.parent);
+    Ic[p] = add(b, Ic[p], Ip, rm.joints[p].tag + "_Ic");
+  }
+  std::vector<std::vector<Scalar>> H(static_cast<std::size_t>(rm.nv),
+                                     std::vector<Scalar>(static_cast<std::size_t>(rm.nv), Scalar::constant(0)));
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    b.comment(fmt::format("{}: mass matrix columns, F = Ic S carried to the root", mj.tag));
+    for(int d = 0; d < mj.nv; ++d)
+    {
+      const std::string h = fmt::format("{}_F{}", mj.tag, d);
+      Force F = apply(b, Ic[k], K[k].S[static_cast<std::size_t>(d)], h);
+      const int col = mj.vIndex + d;
+      // H_kk block (lower part: rows >= col)
+      const auto own = projectForce(b, K[k], F, fmt::format("H_{}", col));
+      for(int e = d; e < mj.nv; ++e) H[static_cast<std::size_t>(mj.vIndex + e)][static_cast<std::size_t>(col)] = own[static_cast<std::size_t>(e)];
+      int j = static_cast<int>(k);
+      while(rm.joints[static_cast<std::size_t>(j)].parent >= 0)
+      {
+        const MovingJoint & mjj = rm.joints[static_cast<std::size_t>(j)];
+        F = toParent(b, mjj, K[static_cast<std::size_t>(j)], F, fmt::format("{}_{}", h, mjj.tag));
+        j = mjj.parent;
+        const MovingJoint & mp = rm.joints[static_cast<std::size_t>(j)];
+        const auto Hp = projectForce(b, K[static_cast<std::size_t>(j)], F, fmt::format("H_{}", col));
+        for(int e = 0; e < mp.nv; ++e) H[static_cast<std::size_t>(col)][static_cast<std::size_t>(mp.vIndex + e)] = Hp[static_cast<std::size_t>(e)];
+      }
+    }
+  }
+  return H;
+}
+
+// Parent of each dof in the dof tree (Featherstone's λ on dofs), -1 for a root dof.
+std::vector<int> dofParents(const RobotModel & rm)
+{
+  std::vector<int> lambda(static_cast<std::size_t>(rm.nv), -1);
+  for(const MovingJoint & mj : rm.joints)
+  {
+    const int first = mj.vIndex;
+    lambda[static_cast<std::size_t>(first)] =
+        mj.parent < 0 ? -1 : rm.joints[static_cast<std::size_t>(mj.parent)].vIndex + rm.joints[static_cast<std::size_t>(mj.parent)].nv - 1;
+    for(int d = 1; d < mj.nv; ++d) lambda[static_cast<std::size_t>(first + d)] = first + d - 1;
+  }
+  return lambda;
+}
+
+} // namespace
+
+EmittedBody massMatrixBody(const RobotModel & rm)
+{
+  Block b;
+  const auto K = emitKernels(b, rm, "q");
+  const auto H = emitCrba(b, rm, K);
+  for(int r = 0; r < rm.nv; ++r)
+    for(int c = 0; c <= r; ++c)
+    {
+      // H is filled on the lower triangle: entry (r, c) with r >= c sits in H[r][c] or H[c][r].
+      const Scalar & x = H[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].isZero()
+                             ? H[static_cast<std::size_t>(c)][static_cast<std::size_t>(r)]
+                             : H[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
+      if(x.isZero()) continue;
+      b.line(fmt::format("H({}, {}) = {};", r, c, Block::text(x)));
+      if(r != c) b.line(fmt::format("H({}, {}) = {};", c, r, Block::text(x)));
+    }
+  return finish(b);
+}
+
+EmittedBody forwardDynamicsBody(const RobotModel & rm)
+{
+  Block b;
+  const auto K = emitKernels(b, rm, "q");
+  auto Hfull = emitCrba(b, rm, K);
+  const auto nv = static_cast<std::size_t>(rm.nv);
+  // Symmetric view: L[r][c] for c <= r.
+  std::vector<std::vector<Scalar>> L(nv, std::vector<Scalar>(nv, Scalar::constant(0)));
+  for(std::size_t r = 0; r < nv; ++r)
+    for(std::size_t c = 0; c <= r; ++c) L[r][c] = Hfull[r][c].isZero() ? Hfull[c][r] : Hfull[r][c];
+  // Right-hand side: tau - C(q, alpha) with C by an inline RNEA (no alphaD).
+  b.line("const Tangent<S> C = nonlinear_effects<S>(q, alpha);");
+  std::vector<Scalar> x(nv);
+  for(std::size_t i = 0; i < nv; ++i) x[i] = b.sum({Term{1.0, {Scalar::var(fmt::format("tau[{}]", i))}}, Term{-1.0, {Scalar::var(fmt::format("C[{}]", i))}}}, fmt::format("x{}", i));
+  const std::vector<int> lambda = dofParents(rm);
+  b.comment("tree-sparse factorisation H = L^T D L (Featherstone, RBDA 6.5), in place on the lower triangle");
+  std::vector<Scalar> invD(nv);
+  for(std::size_t k = nv; k-- > 0;)
+  {
+    invD[k] = b.def("S(1) / " + Block::text(L[k][k]), fmt::format("invD{}", k));
+    for(int i = lambda[k]; i >= 0; i = lambda[static_cast<std::size_t>(i)])
+    {
+      const auto ii = static_cast<std::size_t>(i);
+      const Scalar a = mul(b, L[k][ii], invD[k], fmt::format("L{}_{}", k, i));
+      for(int j = i; j >= 0; j = lambda[static_cast<std::size_t>(j)])
+      {
+        const auto jj = static_cast<std::size_t>(j);
+        L[ii][jj] = b.sum({Term{1.0, {L[ii][jj]}}, Term{-1.0, {L[k][jj], a}}}, fmt::format("H{}_{}", i, j));
+      }
+      L[k][ii] = a;
+    }
+  }
+  b.comment("solve L^T D L alphaD = tau - C");
+  for(std::size_t i = nv; i-- > 0;)
+    for(int j = lambda[i]; j >= 0; j = lambda[static_cast<std::size_t>(j)])
+    {
+      const auto jj = static_cast<std::size_t>(j);
+      x[jj] = b.sum({Term{1.0, {x[jj]}}, Term{-1.0, {L[i][jj], x[i]}}}, fmt::format("x{}", j));
+    }
+  for(std::size_t i = 0; i < nv; ++i) x[i] = mul(b, x[i], invD[i], fmt::format("x{}", i));
+  for(std::size_t i = 0; i < nv; ++i)
+    for(int j = lambda[i]; j >= 0; j = lambda[static_cast<std::size_t>(j)])
+      x[i] = b.sum({Term{1.0, {x[i]}}, Term{-1.0, {L[i][static_cast<std::size_t>(j)], x[static_cast<std::size_t>(j)]}}}, fmt::format("x{}", i));
+  for(std::size_t i = 0; i < nv; ++i) b.line(fmt::format("alphaD[{}] = {};", i, Block::text(x[i])));
+  return finish(b);
+}
+
+EmittedBody jacobianBody(const RobotModel & rm)
+{
+  Block b;
+  b.line("switch(body)");
+  b.line("{");
+  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
+  {
+    const BodyFrame & bf = rm.bodies[i];
+    b.line(fmt::format("case Body::{}:", bf.ident));
+    b.line("{");
+    if(bf.owner >= 0)
+    {
+      b.comment(fmt::format("link '{}': one column per dof on the path, world axes at the link origin p", bf.name));
+      Vec3 p;
+      for(int c = 0; c < 3; ++c) p[c] = Scalar::var(fmt::format("kin.pose[{}].translation({})", i, c));
+      for(int k : rm.path(bf.owner))
+      {
+        const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
+        const JointKernel K = emitJointKernel(b, mj, "kin.q"); // S depends on q only for backward multi-dof joints
+        const Xform X0 = kinFrame(k);
+        const std::string h = fmt::format("J{}_{}", i, mj.tag);
+        const Vec3 po = sub(b, p, X0.r, h + "_po");
+        for(int d = 0; d < mj.nv; ++d)
+        {
+          // [R s_w; R s_v + (R s_w) x (p - o_k)], R = E_0_k^T
+          const Motion & Sd = K.S[static_cast<std::size_t>(d)];
+          const Vec3 w = tmul(b, X0.E, Sd.w, fmt::format("{}_w{}", h, d));
+          const Vec3 v = add(b, tmul(b, X0.E, Sd.v, fmt::format("{}_Rv{}", h, d)), cross(b, w, po, fmt::format("{}_wxp{}", h, d)),
+                             fmt::format("{}_v{}", h, d));
+          const int col = mj.vIndex + d;
+          for(int r = 0; r < 3; ++r)
+          {
+            if(!w[r].isZero()) b.line(fmt::format("J({}, {}) = {};", r, col, Block::text(w[r])));
+            if(!v[r].isZero()) b.line(fmt::format("J({}, {}) = {};", r + 3, col, Block::text(v[r])));
+          }
+        }
+      }
+    }
+    b.line("break;");
+    b.line("}");
+  }
+  b.line("}");
+  return finish(b);
+}
+
+EmittedBody centerOfMassBody(const RobotModel & rm)
+{
+  Block b;
+  b.comment("com = (sum_k m_k o_k + E_0_k^T h_k + static first moment) / M");
+  Vec3 sum = Vec3::constant(rm.staticMoment);
+  for(std::size_t k = 0; k < rm.joints.size(); ++k)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    if(mj.inertia.mass() == 0.0) continue;
+    const Xform X0 = kinFrame(static_cast<int>(k));
+    const Vec3 Eth = tmul(b, X0.E, Vec3::constant(mj.inertia.momentum()), mj.tag + "_h");
+    const Vec3 mo = scale(b, Scalar::constant(mj.inertia.mass()), X0.r, mj.tag + "_mo");
+    sum = add(b, sum, add(b, Eth, mo, mj.tag + "_mc"), mj.tag + "_sum");
+  }
+  const double invM = rm.totalMass > 0 ? 1.0 / rm.totalMass : 0.0;
+  for(int c = 0; c < 3; ++c) b.line(fmt::format("com({}) = {};", c, Block::text(b.sum({Term{invM, {sum[c]}}}, fmt::format("com_{}", c)))));
+  return finish(b);
+}
+
+} // namespace rbdgen::emit

@@ -1,0 +1,239 @@
+#include "Kernels.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace rbdgen::emit
+{
+
+Xform constantXform(const sva::PTransformd & X)
+{
+  return {Mat3::constant(X.rotation()), Vec3::constant(X.translation())};
+}
+
+namespace
+{
+
+std::string qAt(const std::string & q, int i)
+{
+  return fmt::format("{}[{}]", q, i);
+}
+
+// E = R(a, θ)^T = c 1 - s a^ + (1 - c) a a^T, with transposed = R(a, θ) for backward joints.
+Mat3 axisRotationT(Block & b, const Eigen::Vector3d & a, const Scalar & c, const Scalar & s, bool transposed,
+                   const std::string & hint)
+{
+  Eigen::Matrix3d ax;
+  ax << 0, -a.z(), a.y(), a.z(), 0, -a.x(), -a.y(), a.x(), 0;
+  const Eigen::Matrix3d aa = a * a.transpose();
+  const double sign = transposed ? 1.0 : -1.0;
+  Mat3 E;
+  for(int r = 0; r < 3; ++r)
+    for(int k = 0; k < 3; ++k)
+    {
+      const double delta = r == k ? 1.0 : 0.0;
+      // c (δ - a_r a_k) + a_r a_k ± s (a^)_rk
+      E(r, k) = b.sum({Term{delta - aa(r, k), {c}}, Term{sign * ax(r, k), {s}}, Term{aa(r, k), {}}},
+                      fmt::format("{}_E{}{}", hint, r, k));
+    }
+  return E;
+}
+
+// E = R(quat)^T for a quaternion [w x y z] that need not be unit: R = 1 + s (w v^ + v^ v^) with
+// s = 2 / |quat|^2, the rotation of the normalised quaternion.
+Mat3 quaternionRotationT(Block & b, const std::string & q, int i0, const std::string & hint)
+{
+  const Scalar w = Scalar::var(qAt(q, i0)), x = Scalar::var(qAt(q, i0 + 1)), y = Scalar::var(qAt(q, i0 + 2)),
+               z = Scalar::var(qAt(q, i0 + 3));
+  const Scalar n2 = b.sum({Term{1, {w, w}}, Term{1, {x, x}}, Term{1, {y, y}}, Term{1, {z, z}}}, hint + "_n2");
+  const Scalar s = b.def("S(2) / " + Block::text(n2), hint + "_s");
+  auto p = [&](const Scalar & u, const Scalar & v, const std::string & name) {
+    return b.sum({Term{1, {s, u, v}}}, hint + "_" + name);
+  };
+  const Scalar xx = p(x, x, "xx"), yy = p(y, y, "yy"), zz = p(z, z, "zz"), xy = p(x, y, "xy"), xz = p(x, z, "xz"),
+               yz = p(y, z, "yz"), wx = p(w, x, "wx"), wy = p(w, y, "wy"), wz = p(w, z, "wz");
+  auto e = [&](std::vector<Term> t, int r, int c) { return b.sum(t, fmt::format("{}_E{}{}", hint, r, c)); };
+  // R (right-handed, rotation of the child in the parent); E = R^T.
+  Mat3 R;
+  R(0, 0) = e({Term{1, {}}, Term{-1, {yy}}, Term{-1, {zz}}}, 0, 0);
+  R(1, 1) = e({Term{1, {}}, Term{-1, {xx}}, Term{-1, {zz}}}, 1, 1);
+  R(2, 2) = e({Term{1, {}}, Term{-1, {xx}}, Term{-1, {yy}}}, 2, 2);
+  // Off-diagonal entries named after their place in E = R^T.
+  R(0, 1) = e({Term{1, {xy}}, Term{-1, {wz}}}, 1, 0);
+  R(1, 0) = e({Term{1, {xy}}, Term{1, {wz}}}, 0, 1);
+  R(0, 2) = e({Term{1, {xz}}, Term{1, {wy}}}, 2, 0);
+  R(2, 0) = e({Term{1, {xz}}, Term{-1, {wy}}}, 0, 2);
+  R(1, 2) = e({Term{1, {yz}}, Term{-1, {wx}}}, 2, 1);
+  R(2, 1) = e({Term{1, {yz}}, Term{1, {wx}}}, 1, 2);
+  return R.transpose();
+}
+
+Motion constantMotion(const Eigen::Matrix<double, 6, 1> & s)
+{
+  return {Vec3::constant(s.head<3>()), Vec3::constant(s.tail<3>())};
+}
+
+} // namespace
+
+JointKernel emitJointKernel(Block & b, const MovingJoint & mj, const std::string & q)
+{
+  const rbd::Joint & j = mj.joint;
+  const std::string h = mj.tag;
+  const bool fwd = j.forward();
+  const Eigen::Vector3d a = j.axis();
+  JointKernel K;
+  K.Xj = Xform::identity();
+  auto sincos = [&](int i) {
+    const Scalar s = b.def(fmt::format("std::sin({})", qAt(q, i)), h + "_s");
+    const Scalar c = b.def(fmt::format("std::cos({})", qAt(q, i)), h + "_c");
+    return std::make_pair(s, c);
+  };
+  // Forward kernel; backward joints are handled below.
+  switch(j.type())
+  {
+    case rbd::Joint::Rev:
+    {
+      const auto [s, c] = sincos(mj.qIndex);
+      // Backward Rev: X_fwd(-q) = rotation transposed.
+      K.Xj.E = axisRotationT(b, a, c, s, !fwd, h);
+      break;
+    }
+    case rbd::Joint::Prism:
+      K.Xj.r = scale(b, Scalar::var(qAt(q, mj.qIndex)), Vec3::constant(fwd ? a : Eigen::Vector3d(-a)), h + "_r");
+      break;
+    case rbd::Joint::Cylindrical:
+    {
+      const auto [s, c] = sincos(mj.qIndex);
+      K.Xj.E = axisRotationT(b, a, c, s, !fwd, h);
+      K.Xj.r = scale(b, Scalar::var(qAt(q, mj.qIndex + 1)), Vec3::constant(fwd ? a : Eigen::Vector3d(-a)), h + "_r");
+      break;
+    }
+    case rbd::Joint::Planar:
+    {
+      const auto [s, c] = sincos(mj.qIndex);
+      K.Xj.E = axisRotationT(b, a, c, s, false, h);
+      const Scalar x = Scalar::var(qAt(q, mj.qIndex + 1)), y = Scalar::var(qAt(q, mj.qIndex + 2));
+      const Eigen::Vector3d u = j.planeU(), w = j.planeW();
+      for(int i = 0; i < 3; ++i) K.Xj.r[i] = b.sum({Term{u(i), {x}}, Term{w(i), {y}}}, fmt::format("{}_r{}", h, i));
+      break;
+    }
+    case rbd::Joint::Spherical:
+      K.Xj.E = quaternionRotationT(b, q, mj.qIndex, h);
+      break;
+    case rbd::Joint::Free:
+      K.Xj.E = quaternionRotationT(b, q, mj.qIndex, h);
+      for(int i = 0; i < 3; ++i) K.Xj.r[i] = Scalar::var(qAt(q, mj.qIndex + 4 + i));
+      break;
+    case rbd::Joint::Fixed:
+      break;
+  }
+  const auto & S = j.forwardMotionSubspace();
+  const bool axisJoint = j.type() == rbd::Joint::Rev || j.type() == rbd::Joint::Prism || j.type() == rbd::Joint::Cylindrical;
+  if(fwd || axisJoint)
+  {
+    for(int d = 0; d < mj.nv; ++d) K.S.push_back(constantMotion(fwd ? S.col(d) : Eigen::Matrix<double, 6, 1>(-S.col(d))));
+    return K;
+  }
+  // Backward Spherical/Planar/Free: X = X_fwd^-1 = (E^T, -E r), S = -X_fwd^-1 S_fwd.
+  const Xform Xf = K.Xj;
+  K.Xj.E = Xf.E.transpose();
+  K.Xj.r = scale(b, Scalar::constant(-1.0), mul(b, Xf.E, Xf.r, h + "_Er"), h + "_rb");
+  for(int d = 0; d < mj.nv; ++d)
+  {
+    const Motion col = invApply(b, Xf, constantMotion(S.col(d)), fmt::format("{}_S{}", h, d));
+    K.S.push_back({scale(b, Scalar::constant(-1.0), col.w, fmt::format("{}_Sw{}", h, d)),
+                   scale(b, Scalar::constant(-1.0), col.v, fmt::format("{}_Sv{}", h, d))});
+  }
+  return K;
+}
+
+std::vector<JointKernel> emitKernels(Block & b, const RobotModel & rm, const std::string & q)
+{
+  std::vector<JointKernel> K;
+  for(const MovingJoint & mj : rm.joints)
+  {
+    b.comment(fmt::format("{}: joint '{}' ({})", mj.tag, mj.name, describeJoint(mj)));
+    K.push_back(emitJointKernel(b, mj, q));
+  }
+  return K;
+}
+
+Motion toChild(Block & b, const MovingJoint & mj, const JointKernel & K, const Motion & m, const std::string & hint)
+{
+  return apply(b, K.Xj, apply(b, constantXform(mj.Xt), m, hint + "_t"), hint);
+}
+
+Force toParent(Block & b, const MovingJoint & mj, const JointKernel & K, const Force & f, const std::string & hint)
+{
+  return transApply(b, constantXform(mj.Xt), transApply(b, K.Xj, f, hint + "_j"), hint);
+}
+
+std::vector<Xform> emitWorldPoses(Block & b, const RobotModel & rm, const std::vector<JointKernel> & K)
+{
+  std::vector<Xform> X0;
+  for(std::size_t k = 0; k < rm.joints.size(); ++k)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    const Xform Xt = constantXform(mj.Xt);
+    const Xform X_0_jt = mj.parent < 0 ? Xt : compose(b, Xt, X0[static_cast<std::size_t>(mj.parent)], mj.tag + "_X0t");
+    X0.push_back(compose(b, K[k].Xj, X_0_jt, mj.tag + "_X0"));
+  }
+  return X0;
+}
+
+Motion jointMotion(Block & b, const JointKernel & K, const std::string & v, int offset, const std::string & hint)
+{
+  Motion out;
+  for(int i = 0; i < 3; ++i)
+  {
+    std::vector<Term> tw, tv;
+    for(std::size_t d = 0; d < K.S.size(); ++d)
+    {
+      const Scalar x = Scalar::var(fmt::format("{}[{}]", v, offset + static_cast<int>(d)));
+      tw.push_back(Term{1.0, {K.S[d].w[i], x}});
+      tv.push_back(Term{1.0, {K.S[d].v[i], x}});
+    }
+    const char * ax = i == 0 ? "x" : (i == 1 ? "y" : "z");
+    out.w[i] = b.sum(tw, hint + "_w_" + ax);
+    out.v[i] = b.sum(tv, hint + "_v_" + ax);
+  }
+  return out;
+}
+
+std::vector<Scalar> projectForce(Block & b, const JointKernel & K, const Force & f, const std::string & hint)
+{
+  std::vector<Scalar> out;
+  for(std::size_t d = 0; d < K.S.size(); ++d)
+  {
+    std::vector<Term> t;
+    for(int i = 0; i < 3; ++i)
+    {
+      t.push_back(Term{1.0, {K.S[d].w[i], f.n[i]}});
+      t.push_back(Term{1.0, {K.S[d].v[i], f.f[i]}});
+    }
+    out.push_back(b.sum(t, fmt::format("{}_{}", hint, d)));
+  }
+  return out;
+}
+
+std::string describeJoint(const MovingJoint & mj)
+{
+  const rbd::Joint & j = mj.joint;
+  std::string s = rbd::jointTypeName(j.type());
+  const bool hasAxis = j.type() == rbd::Joint::Rev || j.type() == rbd::Joint::Prism ||
+                       j.type() == rbd::Joint::Cylindrical || j.type() == rbd::Joint::Planar;
+  if(hasAxis)
+  {
+    const Eigen::Vector3d a = j.axis();
+    const char * names[3] = {"x", "y", "z"};
+    std::string ax;
+    for(int i = 0; i < 3; ++i)
+      if(std::abs(std::abs(a(i)) - 1.0) < 1e-15) ax = std::string(a(i) < 0 ? "-" : "") + names[i];
+    s += ax.empty() ? fmt::format(" about ({:.6g}, {:.6g}, {:.6g})", a.x(), a.y(), a.z()) : " about " + ax;
+  }
+  if(!j.forward()) s += ", backward";
+  return s;
+}
+
+} // namespace rbdgen::emit

@@ -1,0 +1,71 @@
+#include "info.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <rbd/FK.h>
+#include <rbd/FV.h>
+#include <rbd/ID.h>
+
+namespace rbdgen
+{
+namespace
+{
+
+std::string axisText(const rbd::Joint & j)
+{
+  switch(j.type())
+  {
+    case rbd::Joint::Rev:
+    case rbd::Joint::Prism:
+    case rbd::Joint::Cylindrical:
+    case rbd::Joint::Planar:
+      return fmt::format(" axis ({:g} {:g} {:g})", j.axis().x(), j.axis().y(), j.axis().z());
+    default:
+      return "";
+  }
+}
+
+// One line per body, indented by depth: "body  <- joint (Type, axis, dof) mass".
+void printTree(std::ostream & os, const rbd::MultiBody & mb)
+{
+  std::vector<int> depth(static_cast<std::size_t>(mb.nrBodies()), 0);
+  for(int i = 0; i < mb.nrBodies(); ++i)
+  {
+    const int p = mb.parent(i);
+    depth[static_cast<std::size_t>(i)] = p < 0 ? 0 : depth[static_cast<std::size_t>(p)] + 1;
+    const auto & j = mb.joint(i);
+    fmt::print(os, "  {:{}}{}  <- {} ({}{}{}, dof {}) mass {:.4g} kg\n", "", 2 * depth[static_cast<std::size_t>(i)],
+               mb.body(i).name(), j.name(), rbd::jointTypeName(j.type()), axisText(j), j.forward() ? "" : ", backward",
+               j.dof(), mb.body(i).inertia().mass());
+  }
+}
+
+} // namespace
+
+void printInfo(std::ostream & os, const rbd::parsers::ParserResult & robot)
+{
+  const rbd::MultiBody & mb = robot.mb;
+  double mass = 0;
+  for(const auto & b : mb.bodies()) mass += b.inertia().mass();
+  fmt::print(os, "robot '{}': {} bodies, {} joints, nq = {}, nv = {}, total mass {:.4g} kg\n", robot.name,
+             mb.nrBodies(), mb.nrJoints(), mb.nrParams(), mb.nrDof(), mass);
+  fmt::print(os, "tree (body <- joint):\n");
+  printTree(os, mb);
+  for(const auto & w : robot.warnings) fmt::print(os, "warning: {}\n", w);
+
+  // Gravity torques at the zero configuration: inverse dynamics with alpha = alphaD = 0.
+  rbd::MultiBodyConfig mbc(mb);
+  mbc.zero(mb);
+  rbd::forwardKinematics(mb, mbc);
+  rbd::forwardVelocity(mb, mbc);
+  rbd::InverseDynamics id(mb);
+  id.inverseDynamics(mb, mbc);
+  fmt::print(os, "inverse dynamics at q = 0, alpha = alphaD = 0 (gravity 9.81 m/s^2 along -z):\n");
+  for(int i = 0; i < mb.nrJoints(); ++i)
+    for(std::size_t k = 0; k < mbc.jointTorque[static_cast<std::size_t>(i)].size(); ++k)
+      fmt::print(os, "  tau[{}][{}] = {:+.6f} {}\n", mb.joint(i).name(), k, mbc.jointTorque[static_cast<std::size_t>(i)][k],
+                 mb.joint(i).type() == rbd::Joint::Prism ? "N" : "N m or N");
+}
+
+} // namespace rbdgen

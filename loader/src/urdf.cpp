@@ -1,0 +1,200 @@
+// URDF loader: checked text -> urdfdom model -> rbd::MultiBodyGraph -> MultiBody (see urdf.h).
+#include <rbd/parsers/urdf.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <mutex>
+#include <sstream>
+
+#include <console_bridge/console.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <rbd/FK.h>
+#include <rbd/FV.h>
+
+#include "UrdfCheck.h"
+
+namespace rbd
+{
+namespace parsers
+{
+namespace
+{
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+/// Collects urdfdom's console_bridge errors instead of printing them.
+class CaptureErrors : public console_bridge::OutputHandler
+{
+public:
+  void log(const std::string & text, console_bridge::LogLevel level, const char *, int) override
+  {
+    if(level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR && first.empty()) first = text;
+  }
+  std::string first;
+};
+
+/// urdfdom's parser, its error messages captured (console_bridge's handler is global: one at a time).
+urdf::ModelInterfaceSharedPtr parseWithUrdfdom(const std::string & xml, std::string & error)
+{
+  static std::mutex m;
+  std::lock_guard<std::mutex> lock(m);
+  CaptureErrors capture;
+  console_bridge::useOutputHandler(&capture);
+  urdf::ModelInterfaceSharedPtr model;
+  try
+  {
+    model = urdf::parseURDF(xml);
+  }
+  catch(const std::exception & e)
+  {
+    capture.first = e.what();
+  }
+  console_bridge::restorePreviousOutputHandler();
+  error = capture.first;
+  return model;
+}
+
+/// Usual right-handed rotation of a urdfdom pose (child frame in the parent).
+Eigen::Matrix3d rotation(const urdf::Rotation & r)
+{
+  return Eigen::Quaterniond(r.w, r.x, r.y, r.z).normalized().toRotationMatrix();
+}
+
+/// sva transform from the parent frame to the pose's frame: E = R^T, r = xyz.
+sva::PTransformd toPTransform(const urdf::Pose & p)
+{
+  return sva::PTransformd(Eigen::Matrix3d(rotation(p.rotation).transpose()),
+                          Eigen::Vector3d(p.position.x, p.position.y, p.position.z));
+}
+
+/// Spatial inertia at the link origin, in link coordinates, from the URDF <inertial>:
+/// I_o = R I_c R^T + m c^ c^T (parallel axis), h = m c, with R the inertial frame's rotation
+/// in the link and c its origin (the centre of mass).
+sva::RBInertiad toRBInertia(const urdf::InertialSharedPtr & in)
+{
+  if(!in) return sva::RBInertiad(0, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero());
+  Eigen::Matrix3d Ic;
+  Ic << in->ixx, in->ixy, in->ixz, in->ixy, in->iyy, in->iyz, in->ixz, in->iyz, in->izz;
+  const Eigen::Vector3d c(in->origin.position.x, in->origin.position.y, in->origin.position.z);
+  const Eigen::Matrix3d Io = sva::inertiaToOrigin(Ic, in->mass, c, rotation(in->origin.rotation));
+  return sva::RBInertiad(in->mass, in->mass * c, Io);
+}
+
+rbd::Joint toJoint(const urdf::Joint & j)
+{
+  const Eigen::Vector3d axis(j.axis.x, j.axis.y, j.axis.z);
+  switch(j.type)
+  {
+    case urdf::Joint::REVOLUTE:
+    case urdf::Joint::CONTINUOUS: return rbd::Joint(rbd::Joint::Rev, axis, true, j.name);
+    case urdf::Joint::PRISMATIC: return rbd::Joint(rbd::Joint::Prism, axis, true, j.name);
+    case urdf::Joint::PLANAR: return rbd::Joint(rbd::Joint::Planar, axis, true, j.name);
+    case urdf::Joint::FLOATING: return rbd::Joint(rbd::Joint::Free, true, j.name);
+    case urdf::Joint::FIXED: return rbd::Joint(rbd::Joint::Fixed, true, j.name);
+    default: throw std::logic_error("unknown joint type"); // excluded by checkUrdf
+  }
+}
+
+/// Limits of one (non-Fixed) joint: position bounds only for revolute and prismatic.
+void addLimits(const urdf::Joint & uj, const rbd::Joint & j, Limits & limits)
+{
+  const auto np = static_cast<std::size_t>(j.params()), nd = static_cast<std::size_t>(j.dof());
+  const bool bounded = uj.type == urdf::Joint::REVOLUTE || uj.type == urdf::Joint::PRISMATIC;
+  const auto & l = uj.limits;
+  limits.lower[uj.name].assign(np, bounded && l ? l->lower : -inf);
+  limits.upper[uj.name].assign(np, bounded && l ? l->upper : inf);
+  limits.velocity[uj.name].assign(nd, l ? l->velocity : inf);
+  limits.torque[uj.name].assign(nd, l ? l->effort : inf);
+}
+
+/// Warn about movable joints that carry no mass at all (singular mass matrix).
+void warnMassless(const rbd::MultiBody & mb, const std::string & file, std::vector<std::string> & warnings)
+{
+  std::vector<double> subtreeMass(static_cast<std::size_t>(mb.nrBodies()), 0.);
+  for(int i = mb.nrBodies() - 1; i >= 0; --i)
+  {
+    subtreeMass[static_cast<std::size_t>(i)] += mb.body(i).inertia().mass();
+    if(mb.parent(i) >= 0) subtreeMass[static_cast<std::size_t>(mb.parent(i))] += subtreeMass[static_cast<std::size_t>(i)];
+  }
+  for(int i = 0; i < mb.nrBodies(); ++i)
+    if(mb.joint(i).dof() > 0 && subtreeMass[static_cast<std::size_t>(i)] <= 0)
+      warnings.push_back(file + ": link '" + mb.body(i).name() + "': massless link moved by joint '" + mb.joint(i).name() +
+                         "' with nothing massive beyond it (singular mass matrix)");
+}
+
+} // namespace
+
+ParserResult fromUrdfString(const std::string & xml, const ParserOptions & opt, const std::string & sourceName)
+{
+  const detail::CheckedUrdf checked = detail::checkUrdf(xml, sourceName, opt);
+  std::string urdfdomError;
+  const urdf::ModelInterfaceSharedPtr model = parseWithUrdfdom(xml, urdfdomError);
+  if(!model)
+    throw UrdfError(sourceName, "robot", checked.robotName,
+                    "malformed URDF or XML (urdfdom: " + (urdfdomError.empty() ? "no detail" : urdfdomError) + ")");
+
+  ParserResult res;
+  res.name = model->getName();
+  res.warnings = checked.warnings;
+
+  // Bodies and joints in document order; a body frame is its link frame.
+  for(const std::string & name : checked.links) res.mbg.addBody(rbd::Body(toRBInertia(model->links_.at(name)->inertial), name));
+  for(const std::string & name : checked.joints)
+  {
+    const urdf::Joint & uj = *model->joints_.at(name);
+    res.mbg.addJoint(toJoint(uj));
+    res.mbg.linkBodies(uj.parent_link_name, toPTransform(uj.parent_to_joint_origin_transform), uj.child_link_name,
+                       sva::PTransformd::Identity(), uj.name);
+  }
+
+  // Filtered links: drop (or merge into the parent body) each subtree, seen from the base.
+  const std::string base = opt.baseLink.empty() ? checked.rootLink : opt.baseLink;
+  for(const std::string & f : opt.filteredLinks)
+  {
+    if(!res.mbg.hasBody(f)) continue; // already gone with a filtered ancestor
+    const std::string joint = res.mbg.predecessorJoint(base).at(f);
+    if(opt.removeFilteredLinks) res.mbg.removeJoint(base, joint);
+    else res.mbg.mergeSubBodies(base, joint, {});
+  }
+
+  res.mb = res.mbg.makeMultiBody(base, opt.fixed);
+  res.mbc = rbd::MultiBodyConfig(res.mb);
+  res.mbc.zero(res.mb);
+  rbd::forwardKinematics(res.mb, res.mbc);
+  rbd::forwardVelocity(res.mb, res.mbc);
+  res.bodyBaseTransforms = res.mbg.bodiesBaseTransform(base);
+
+  // Limits, dynamics and mimics of the joints kept in the model.
+  for(const rbd::Joint & j : res.mb.joints())
+  {
+    if(j.name() == "Root") continue;
+    const urdf::Joint & uj = *model->joints_.at(j.name());
+    if(j.type() != rbd::Joint::Fixed) addLimits(uj, j, res.limits);
+    if(uj.dynamics) res.dynamics[j.name()] = JointDynamics{uj.dynamics->damping, uj.dynamics->friction};
+    if(uj.mimic)
+    {
+      res.mimics[j.name()] = Mimic{uj.mimic->joint_name, uj.mimic->multiplier, uj.mimic->offset};
+      std::ostringstream os;
+      os << sourceName << ": joint '" << j.name() << "': mimics joint '" << uj.mimic->joint_name << "' (q = "
+         << uj.mimic->multiplier << " q_" << uj.mimic->joint_name << " + " << uj.mimic->offset
+         << "); loaded as an independent joint";
+      res.warnings.push_back(os.str());
+    }
+  }
+  warnMassless(res.mb, sourceName, res.warnings);
+  return res;
+}
+
+ParserResult fromUrdfFile(const std::string & path, const ParserOptions & opt)
+{
+  std::ifstream in(path, std::ios::binary);
+  if(!in) throw UrdfError(path, "file", path, "cannot open the file for reading");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return fromUrdfString(ss.str(), opt, path);
+}
+
+} // namespace parsers
+} // namespace rbd

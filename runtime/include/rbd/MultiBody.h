@@ -1,0 +1,137 @@
+#pragma once
+// MultiBody: the immutable, topologically sorted kinematic tree (parent[i] < i).
+// Joint i is the joint whose successor is body i; joint 0 is the root joint (predecessor -1).
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <rbd/Body.h>
+#include <rbd/Joint.h>
+
+namespace rbd
+{
+
+template<typename T>
+class MultiBodyTpl
+{
+public:
+  using Scalar = T;
+  using BodyT = BodyTpl<T>;
+  using JointT = JointTpl<T>;
+
+  MultiBodyTpl() = default;
+  /// @param pred  predecessor body of each joint (-1 for the root joint)
+  /// @param succ  successor body of each joint
+  /// @param parent parent body of each body (-1 for the root)
+  /// @param Xt    X_pred_joint: from the predecessor body frame to the joint frame, per joint
+  MultiBodyTpl(std::vector<BodyT> bodies,
+               std::vector<JointT> joints,
+               std::vector<int> pred,
+               std::vector<int> succ,
+               std::vector<int> parent,
+               std::vector<sva::PTransform<T>> Xt);
+
+  int nrBodies() const { return static_cast<int>(bodies_.size()); }
+  int nrJoints() const { return static_cast<int>(joints_.size()); }
+  /// Size of the flat q vector.
+  int nrParams() const { return nrParams_; }
+  /// Size of the flat alpha vector.
+  int nrDof() const { return nrDof_; }
+
+  const std::vector<BodyT> & bodies() const { return bodies_; }
+  const BodyT & body(int i) const { return bodies_[static_cast<std::size_t>(i)]; }
+  const std::vector<JointT> & joints() const { return joints_; }
+  const JointT & joint(int i) const { return joints_[static_cast<std::size_t>(i)]; }
+  const std::vector<int> & predecessors() const { return pred_; }
+  int predecessor(int i) const { return pred_[static_cast<std::size_t>(i)]; }
+  const std::vector<int> & successors() const { return succ_; }
+  int successor(int i) const { return succ_[static_cast<std::size_t>(i)]; }
+  const std::vector<int> & parents() const { return parent_; }
+  int parent(int i) const { return parent_[static_cast<std::size_t>(i)]; }
+  /// X_T: from the predecessor body frame to the joint frame, per joint.
+  const std::vector<sva::PTransform<T>> & transforms() const { return Xt_; }
+  const sva::PTransform<T> & transform(int i) const { return Xt_[static_cast<std::size_t>(i)]; }
+
+  /// Position of joint i in the flat q vector / alpha vector.
+  int jointPosInParam(int i) const { return jointPosInParam_[static_cast<std::size_t>(i)]; }
+  int jointPosInDof(int i) const { return jointPosInDof_[static_cast<std::size_t>(i)]; }
+  const std::vector<int> & jointsPosInParam() const { return jointPosInParam_; }
+  const std::vector<int> & jointsPosInDof() const { return jointPosInDof_; }
+
+  /// Index by name; throws std::out_of_range naming the unknown body or joint.
+  int bodyIndexByName(const std::string & name) const { return lookup(bodyIndex_, name, "body"); }
+  int jointIndexByName(const std::string & name) const { return lookup(jointIndex_, name, "joint"); }
+  bool hasBody(const std::string & name) const { return bodyIndex_.count(name) != 0; }
+  bool hasJoint(const std::string & name) const { return jointIndex_.count(name) != 0; }
+  const std::map<std::string, int> & bodyIndexByName() const { return bodyIndex_; }
+  const std::map<std::string, int> & jointIndexByName() const { return jointIndex_; }
+
+  /// Change the root joint's static transform X_0_j0 (e.g. to place a fixed robot in the world).
+  void transform(int i, const sva::PTransform<T> & X) { Xt_[static_cast<std::size_t>(i)] = X; }
+
+  /// The same model in another scalar type (e.g. long double as an accuracy reference).
+  template<typename U>
+  MultiBodyTpl<U> cast() const
+  {
+    std::vector<BodyTpl<U>> b;
+    std::vector<JointTpl<U>> j;
+    std::vector<sva::PTransform<U>> X;
+    for(const auto & body : bodies_) b.push_back(body.template cast<U>());
+    for(const auto & joint : joints_) j.push_back(joint.template cast<U>());
+    for(const auto & x : Xt_) X.push_back(x.template cast<U>());
+    return MultiBodyTpl<U>(b, j, pred_, succ_, parent_, X);
+  }
+
+private:
+  static int lookup(const std::map<std::string, int> & m, const std::string & name, const char * what)
+  {
+    auto it = m.find(name);
+    if(it == m.end()) throw std::out_of_range(std::string("no ") + what + " named '" + name + "'");
+    return it->second;
+  }
+
+  std::vector<BodyT> bodies_;
+  std::vector<JointT> joints_;
+  std::vector<int> pred_, succ_, parent_;
+  std::vector<sva::PTransform<T>> Xt_;
+  std::vector<int> jointPosInParam_, jointPosInDof_;
+  int nrParams_ = 0, nrDof_ = 0;
+  std::map<std::string, int> bodyIndex_, jointIndex_;
+};
+
+using MultiBody = MultiBodyTpl<double>;
+
+template<typename T>
+MultiBodyTpl<T>::MultiBodyTpl(std::vector<BodyT> bodies,
+                              std::vector<JointT> joints,
+                              std::vector<int> pred,
+                              std::vector<int> succ,
+                              std::vector<int> parent,
+                              std::vector<sva::PTransform<T>> Xt)
+: bodies_(std::move(bodies)), joints_(std::move(joints)), pred_(std::move(pred)), succ_(std::move(succ)),
+  parent_(std::move(parent)), Xt_(std::move(Xt))
+{
+  const std::size_t n = bodies_.size();
+  if(joints_.size() != n || pred_.size() != n || succ_.size() != n || parent_.size() != n || Xt_.size() != n)
+    throw std::invalid_argument("MultiBody: bodies, joints, pred, succ, parent and Xt must have one entry per body");
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    if(parent_[i] >= static_cast<int>(i) || (i > 0 && parent_[i] < 0))
+      throw std::invalid_argument("MultiBody: bodies must be topologically sorted (parent[i] < i)");
+    jointPosInParam_.push_back(nrParams_);
+    jointPosInDof_.push_back(nrDof_);
+    nrParams_ += joints_[i].params();
+    nrDof_ += joints_[i].dof();
+    if(!bodyIndex_.emplace(bodies_[i].name(), static_cast<int>(i)).second)
+      throw std::invalid_argument("MultiBody: duplicate body name '" + bodies_[i].name() + "'");
+    if(!jointIndex_.emplace(joints_[i].name(), static_cast<int>(i)).second)
+      throw std::invalid_argument("MultiBody: duplicate joint name '" + joints_[i].name() + "'");
+  }
+}
+
+extern template class MultiBodyTpl<double>;
+extern template class MultiBodyTpl<long double>;
+
+} // namespace rbd

@@ -1,0 +1,61 @@
+#include <rbd/Checks.h>
+#include <rbd/CoM.h>
+
+namespace rbd
+{
+
+namespace
+{
+template<typename T>
+void checkCoMInputs(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc, bool velocity, bool acceleration)
+{
+  checkMatchBodyVector(mb, mbc.bodyPosW, "bodyPosW");
+  if(velocity) checkMatchBodyVector(mb, mbc.bodyVelB, "bodyVelB");
+  if(acceleration) checkMatchBodyVector(mb, mbc.bodyAccB, "bodyAccB");
+  T M = T(0);
+  for(const auto & b : mb.bodies()) M += b.inertia().mass();
+  if(!(M > T(0))) throw std::invalid_argument("CoM: the total mass of the MultiBody is not positive");
+}
+} // namespace
+
+template<typename T>
+sva::Vector3<T> sComputeCoM(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc)
+{
+  checkCoMInputs(mb, mbc, false, false);
+  return computeCoM(mb, mbc);
+}
+
+template<typename T>
+sva::Vector3<T> sComputeCoMVelocity(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc)
+{
+  checkCoMInputs(mb, mbc, true, false);
+  return computeCoMVelocity(mb, mbc);
+}
+
+template<typename T>
+sva::Vector3<T> sComputeCoMAcceleration(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc)
+{
+  checkCoMInputs(mb, mbc, true, true);
+  return computeCoMAcceleration(mb, mbc);
+}
+
+template sva::Vector3<double> computeCoM(const MultiBodyTpl<double> &, const MultiBodyConfigTpl<double> &);
+template sva::Vector3<long double> computeCoM(const MultiBodyTpl<long double> &, const MultiBodyConfigTpl<long double> &);
+template sva::Vector3<double> computeCoMVelocity(const MultiBodyTpl<double> &, const MultiBodyConfigTpl<double> &);
+template sva::Vector3<long double> computeCoMVelocity(const MultiBodyTpl<long double> &,
+                                                      const MultiBodyConfigTpl<long double> &);
+template sva::Vector3<double> computeCoMAcceleration(const MultiBodyTpl<double> &, const MultiBodyConfigTpl<double> &);
+template sva::Vector3<long double> computeCoMAcceleration(const MultiBodyTpl<long double> &,
+                                                          const MultiBodyConfigTpl<long double> &);
+template sva::Vector3<double> sComputeCoM(const MultiBodyTpl<double> &, const MultiBodyConfigTpl<double> &);
+template sva::Vector3<long double> sComputeCoM(const MultiBodyTpl<long double> &, const MultiBodyConfigTpl<long double> &);
+template sva::Vector3<double> sComputeCoMVelocity(const MultiBodyTpl<double> &, const MultiBodyConfigTpl<double> &);
+template sva::Vector3<long double> sComputeCoMVelocity(const MultiBodyTpl<long double> &,
+                                                       const MultiBodyConfigTpl<long double> &);
+template sva::Vector3<double> sComputeCoMAcceleration(const MultiBodyTpl<double> &, const MultiBodyConfigTpl<double> &);
+template sva::Vector3<long double> sComputeCoMAcceleration(const MultiBodyTpl<long double> &,
+                                                           const MultiBodyConfigTpl<long double> &);
+template class CoMJacobianTpl<double>;
+template class CoMJacobianTpl<long double>;
+
+} // namespace rbd

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Install what is missing, build everything, run every test (ctest). Exit status = pass/fail.
+# Usage: scripts/test.sh [BUILD_DIR]   (default: build)
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${1:-$root/build}"
+"$root/scripts/install-deps.sh"
+jobs="${RBDGEN_JOBS:-$(nproc)}"
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRBDGEN_BUILD_TESTS=ON
+cmake --build "$build" --parallel "$jobs"
+ctest --test-dir "$build" --output-on-failure --parallel "$jobs" --timeout 900

@@ -1,0 +1,165 @@
+#pragma once
+// Helpers of the kinematics_ext tests: random models in double or long double, tolerances per
+// scalar, and a local q ⊕ dq (independent of rbd/EulerIntegration.h) for finite differences.
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <rbd/FA.h>
+#include <rbd/FK.h>
+#include <rbd/FV.h>
+
+#include "TestModels.h"
+
+namespace kinext
+{
+
+/// Tolerances: exact = two exact formulas; fd = a central difference with step h.
+template<typename T>
+struct Prec;
+template<>
+struct Prec<double>
+{
+  static constexpr double exact = 1e-11;
+  static constexpr double fd = 2e-7;
+  static constexpr double h = 1e-6;
+};
+template<>
+struct Prec<long double>
+{
+  static constexpr double exact = 1e-14;
+  static constexpr double fd = 2e-9;
+  static constexpr double h = 1e-7;
+};
+
+using Scalars = ::testing::Types<double, long double>;
+
+/// Random tree of n bodies (every joint type, 30% backward joints) with the given root joint.
+template<typename T>
+rbd::MultiBodyTpl<T> randomModel(rbdtest::Rng & rng, int n, rbd::Joint::Type root)
+{
+  rbdtest::RandomTreeOptions opt;
+  opt.backwardProbability = 0.3;
+  const rbd::MultiBodyGraph mbg = rbdtest::randomGraph(rng, n, opt);
+  return mbg.makeMultiBody("b0", root, rbdtest::randomTransform(rng)).template cast<T>();
+}
+
+/// A root joint type drawn among Free, Fixed, Spherical, Planar and Rev.
+inline rbd::Joint::Type randomRoot(rbdtest::Rng & rng)
+{
+  static const rbd::Joint::Type types[] = {rbd::Joint::Free, rbd::Joint::Fixed, rbd::Joint::Spherical,
+                                           rbd::Joint::Planar, rbd::Joint::Rev};
+  return types[std::uniform_int_distribution<int>(0, 4)(rng)];
+}
+
+/// q ⊕ dq on one joint. Rev/Prism/Cylindrical: q += dq. Spherical: quat ← quat ⊗ exp(dω).
+/// Free: translation += R(quat) dv, then quat as Spherical. Planar: [x y] += R2(θ) [du dw], θ += dθ.
+template<typename T>
+void perturbJoint(const rbd::JointTpl<T> & joint, std::vector<T> & q, const T * dq)
+{
+  auto rotate = [](std::vector<T> & qq, const sva::Vector3<T> & w) {
+    const Eigen::Quaternion<T> quat(qq[0], qq[1], qq[2], qq[3]);
+    const T th = w.norm();
+    Eigen::Quaternion<T> e(T(1), T(0), T(0), T(0));
+    if(th > T(0)) e = Eigen::Quaternion<T>(Eigen::AngleAxis<T>(th, w / th));
+    const Eigen::Quaternion<T> r = quat * e;
+    qq[0] = r.w();
+    qq[1] = r.x();
+    qq[2] = r.y();
+    qq[3] = r.z();
+  };
+  switch(joint.type())
+  {
+    case rbd::Joint::Spherical:
+      rotate(q, sva::Vector3<T>(dq[0], dq[1], dq[2]));
+      break;
+    case rbd::Joint::Free:
+    {
+      const Eigen::Quaternion<T> quat(q[0], q[1], q[2], q[3]);
+      const sva::Vector3<T> dr = quat.toRotationMatrix() * sva::Vector3<T>(dq[3], dq[4], dq[5]);
+      for(int k = 0; k < 3; ++k) q[static_cast<std::size_t>(4 + k)] += dr(k);
+      rotate(q, sva::Vector3<T>(dq[0], dq[1], dq[2]));
+      break;
+    }
+    case rbd::Joint::Planar:
+    {
+      using std::cos;
+      using std::sin;
+      const T c = cos(q[0]), s = sin(q[0]);
+      q[1] += c * dq[1] - s * dq[2];
+      q[2] += s * dq[1] + c * dq[2];
+      q[0] += dq[0];
+      break;
+    }
+    default:
+      for(int k = 0; k < joint.dof(); ++k) q[static_cast<std::size_t>(k)] += dq[k];
+  }
+}
+
+/// q ⊕ dq for the whole tree (dq flat, size nrDof).
+template<typename T>
+std::vector<std::vector<T>> perturb(const rbd::MultiBodyTpl<T> & mb, std::vector<std::vector<T>> q,
+                                    const Eigen::Matrix<T, Eigen::Dynamic, 1> & dq)
+{
+  for(int i = 0; i < mb.nrJoints(); ++i)
+    perturbJoint(mb.joint(i), q[static_cast<std::size_t>(i)], dq.data() + mb.jointPosInDof(i));
+  return q;
+}
+
+/// Run FK and FV.
+template<typename T>
+void kin(const rbd::MultiBodyTpl<T> & mb, rbd::MultiBodyConfigTpl<T> & mbc)
+{
+  rbd::forwardKinematics(mb, mbc);
+  rbd::forwardVelocity(mb, mbc);
+}
+
+/// A copy of mbc moved along the trajectory q(t) = q ⊕ (alpha t + alphaD t²/2), alpha(t) = alpha +
+/// alphaD t, with FK and FV run (alphaD is a flat vector, possibly zero).
+template<typename T>
+rbd::MultiBodyConfigTpl<T> along(const rbd::MultiBodyTpl<T> & mb, const rbd::MultiBodyConfigTpl<T> & mbc, T t,
+                                 const Eigen::Matrix<T, Eigen::Dynamic, 1> & alphaD)
+{
+  rbd::MultiBodyConfigTpl<T> out = mbc;
+  const Eigen::Matrix<T, Eigen::Dynamic, 1> alpha = rbd::dofToVector(mb, mbc.alpha);
+  out.q = perturb(mb, mbc.q, Eigen::Matrix<T, Eigen::Dynamic, 1>(alpha * t + alphaD * (t * t / 2)));
+  out.alpha = rbd::vectorToDof(mb, alpha + alphaD * t);
+  kin(mb, out);
+  return out;
+}
+
+/// Same with alphaD = 0 (q ⊕ alpha t, constant alpha).
+template<typename T>
+rbd::MultiBodyConfigTpl<T> along(const rbd::MultiBodyTpl<T> & mb, const rbd::MultiBodyConfigTpl<T> & mbc, T t)
+{
+  return along(mb, mbc, t, Eigen::Matrix<T, Eigen::Dynamic, 1>(Eigen::Matrix<T, Eigen::Dynamic, 1>::Zero(mb.nrDof())));
+}
+
+/// A copy of mbc with alpha = e_k (flat unit vector), for column-wise finite differences.
+template<typename T>
+rbd::MultiBodyConfigTpl<T> withUnitAlpha(const rbd::MultiBodyTpl<T> & mb, const rbd::MultiBodyConfigTpl<T> & mbc,
+                                         int k)
+{
+  rbd::MultiBodyConfigTpl<T> out = mbc;
+  out.alpha = rbd::vectorToDof(mb, Eigen::Matrix<T, Eigen::Dynamic, 1>::Unit(mb.nrDof(), k));
+  kin(mb, out);
+  return out;
+}
+
+/// w from a skew-symmetric-ish matrix W (its skew part's axial vector).
+template<typename T>
+sva::Vector3<T> vee(const sva::Matrix3<T> & W)
+{
+  return sva::Vector3<T>(W(2, 1) - W(1, 2), W(0, 2) - W(2, 0), W(1, 0) - W(0, 1)) / T(2);
+}
+
+/// Rotation from body i to world coordinates (R = E_0_i^T).
+template<typename T>
+sva::Matrix3<T> R_0(const rbd::MultiBodyConfigTpl<T> & mbc, int i)
+{
+  return mbc.bodyPosW[static_cast<std::size_t>(i)].rotation().transpose();
+}
+
+} // namespace kinext

@@ -94,7 +94,6 @@ public:
   struct LinkInertial
   {
     std::string link;
-    double mass;
     Eigen::Matrix3d I;
     const XMLElement * inertia;
   };
@@ -114,15 +113,14 @@ public:
     double v[6];
     for(int k = 0; k < 6; ++k) v[k] = numbers(ie, keys[k], 1, "link", name, "inertia", true)[0];
     out.link = name;
-    out.mass = m;
     out.I << v[0], v[1], v[2], v[1], v[3], v[4], v[2], v[4], v[5];
     out.inertia = ie;
     return true;
   }
 
   /// Principal moments of a real body: l_i >= 0 and l_i <= l_j + l_k (triangle inequality).
-  /// A triangle violation on a placeholder body (mass <= negligibleMass) is only a warning.
-  void checkInertia(const LinkInertial & li, double negligibleMass, std::vector<std::string> & warnings) const
+  /// A non-PSD inertia is an error; a triangle violation only with `strict` (else a warning).
+  void checkInertia(const LinkInertial & li, bool strict, std::vector<std::string> & warnings) const
   {
     const Eigen::Vector3d l = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(li.I, Eigen::EigenvaluesOnly).eigenvalues();
     const double tol = inertiaTolerance * l.cwiseAbs().sum() + inertiaAbsoluteTolerance;
@@ -132,11 +130,9 @@ public:
     for(int k = 0; k < 3; ++k)
       if(l(k) > l((k + 1) % 3) + l((k + 2) % 3) + tol)
       {
-        if(li.mass > negligibleMass) fail("link", li.link, "inertia violates the triangle inequality: " + moments.str());
-        std::ostringstream w;
-        w << file_ << ": link '" << li.link << "': inertia violates the triangle inequality (" << moments.str()
-          << "), accepted as a placeholder (mass " << li.mass << " kg is negligible)";
-        warnings.push_back(w.str());
+        const std::string reason = "inertia violates the triangle inequality: " + moments.str();
+        if(strict) fail("link", li.link, reason);
+        warnings.push_back(file_ + ": link '" + li.link + "': " + reason + " (not a physical rigid body; kept)");
         return;
       }
   }
@@ -206,7 +202,6 @@ public:
 
     // --- links: unique names, valid inertials ---
     std::map<std::string, const XMLElement *> links;
-    std::vector<LinkInertial> inertials;
     for(const XMLElement * l = robot->FirstChildElement("link"); l; l = l->NextSiblingElement("link"))
     {
       const char * n = l->Attribute("name");
@@ -214,12 +209,9 @@ public:
       if(!links.emplace(n, l).second) fail("link", n, "duplicate link name" + at(l) + ", first at line " + std::to_string(links[n]->GetLineNum()));
       out.links.push_back(n);
       LinkInertial li;
-      if(readInertial(l, n, li)) inertials.push_back(li);
+      if(readInertial(l, n, li)) checkInertia(li, opt.strictInertia, out.warnings);
     }
     if(links.empty()) fail("robot", out.robotName, "no <link> element");
-    double totalMass = 0;
-    for(const LinkInertial & li : inertials) totalMass += li.mass;
-    for(const LinkInertial & li : inertials) checkInertia(li, negligibleMassRatio * totalMass, out.warnings);
     const std::set<std::string> linkSet(out.links.begin(), out.links.end());
 
     // --- joints: unique names, known types, existing links, one parent per link ---

@@ -26,7 +26,8 @@ struct CheckedUrdf
 
 /// Throw UrdfError (naming `file`) on the first problem: malformed XML, duplicate names, missing or
 /// unknown links, several roots, cycles, unknown joint types, zero/non-finite axes, negative or
-/// non-finite masses, invalid inertias, non-finite origins, unknown base or filtered links.
+/// non-finite masses, non-PSD inertias (triangle-inequality violations too with
+/// opt.strictInertia, else a warning), non-finite origins, unknown base or filtered links.
 CheckedUrdf checkUrdf(const std::string & xml, const std::string & file, const ParserOptions & opt);
 
 /// Tolerance of the inertia checks (eigenvalues >= -tol, triangle inequality up to tol), with
@@ -34,9 +35,6 @@ CheckedUrdf checkUrdf(const std::string & xml, const std::string & file, const P
 /// 1e-35 round-off entries pass; a 1 g, 1 mm ball has 4e-10).
 constexpr double inertiaTolerance = 1e-6;
 constexpr double inertiaAbsoluteTolerance = 1e-12;
-/// Bodies lighter than this fraction of the robot's mass are placeholders: a triangle-inequality
-/// violation there (e.g. the all-1e-6 dummy inertias of some published URDFs) is only a warning.
-constexpr double negligibleMassRatio = 1e-4;
 
 } // namespace detail
 } // namespace parsers

@@ -24,19 +24,25 @@ namespace
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
-/// Collects urdfdom's console_bridge errors instead of printing them.
+/// Collects urdfdom's console_bridge messages instead of printing them.
 class CaptureErrors : public console_bridge::OutputHandler
 {
 public:
   void log(const std::string & text, console_bridge::LogLevel level, const char *, int) override
   {
-    if(level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR && first.empty()) first = text;
+    if(level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR)
+    {
+      if(first.empty()) first = text;
+    }
+    else if(level == console_bridge::CONSOLE_BRIDGE_LOG_WARN) warnings.push_back(text);
   }
   std::string first;
+  std::vector<std::string> warnings;
 };
 
-/// urdfdom's parser, its error messages captured (console_bridge's handler is global: one at a time).
-urdf::ModelInterfaceSharedPtr parseWithUrdfdom(const std::string & xml, std::string & error)
+/// urdfdom's parser, its messages captured (console_bridge's handler is global: one at a time).
+urdf::ModelInterfaceSharedPtr parseWithUrdfdom(const std::string & xml, std::string & error,
+                                               std::vector<std::string> & warnings)
 {
   static std::mutex m;
   std::lock_guard<std::mutex> lock(m);
@@ -53,6 +59,7 @@ urdf::ModelInterfaceSharedPtr parseWithUrdfdom(const std::string & xml, std::str
   }
   console_bridge::restorePreviousOutputHandler();
   error = capture.first;
+  warnings = capture.warnings;
   return model;
 }
 
@@ -130,7 +137,8 @@ ParserResult fromUrdfString(const std::string & xml, const ParserOptions & opt, 
 {
   const detail::CheckedUrdf checked = detail::checkUrdf(xml, sourceName, opt);
   std::string urdfdomError;
-  const urdf::ModelInterfaceSharedPtr model = parseWithUrdfdom(xml, urdfdomError);
+  std::vector<std::string> urdfdomWarnings;
+  const urdf::ModelInterfaceSharedPtr model = parseWithUrdfdom(xml, urdfdomError, urdfdomWarnings);
   if(!model)
     throw UrdfError(sourceName, "robot", checked.robotName,
                     "malformed URDF or XML (urdfdom: " + (urdfdomError.empty() ? "no detail" : urdfdomError) + ")");
@@ -138,6 +146,8 @@ ParserResult fromUrdfString(const std::string & xml, const ParserOptions & opt, 
   ParserResult res;
   res.name = model->getName();
   res.warnings = checked.warnings;
+  for(const std::string & w : urdfdomWarnings)
+    res.warnings.push_back(sourceName + ": robot '" + res.name + "': urdfdom: " + w);
 
   // Bodies and joints in document order; a body frame is its link frame.
   for(const std::string & name : checked.links) res.mbg.addBody(rbd::Body(toRBInertia(model->links_.at(name)->inertial), name));

@@ -110,6 +110,21 @@ inline rbd::MultiBody randomModel(rbdtest::Rng & rng, int n, double backwardProb
                          rbdtest::randomTransform(rng));
 }
 
+/// mb in scalar T, with the rotations of its static transforms re-orthonormalised in T (a double
+/// rotation is orthogonal to ~1e-16 only, which would cap every long double identity there).
+template<typename T>
+rbd::MultiBodyTpl<T> castModel(const rbd::MultiBody & mb)
+{
+  rbd::MultiBodyTpl<T> out = mb.template cast<T>();
+  for(int i = 0; i < out.nrJoints(); ++i)
+  {
+    const sva::PTransform<T> & X = out.transform(i);
+    const sva::Matrix3<T> E = Eigen::Quaternion<T>(X.rotation()).normalized().toRotationMatrix();
+    out.transform(i, sva::PTransform<T>(E, X.translation()));
+  }
+  return out;
+}
+
 /// Random external forces (world coordinates, world origin).
 template<typename T>
 void randomForces(rbdtest::Rng & rng, rbd::MultiBodyConfigTpl<T> & mbc, double scale = 1.0)

@@ -253,7 +253,7 @@ TYPED_TEST(Kinematics, AllJointTypesBothDirectionsFiniteDifferences)
   for(int trial = 0; trial < 5; ++trial)
     for(const auto & model : dyntest::allJointsModels(rng))
     {
-      const auto mb = model.mb.template cast<T>();
+      const auto mb = dyntest::castModel<T>(model.mb);
       rbd::MultiBodyConfigTpl<T> mbc(mb);
       rbdtest::randomState<T>(rng, mb, mbc);
       const FDErrors e = fvFaFiniteDifferences(mb, mbc);
@@ -274,7 +274,7 @@ TYPED_TEST(Kinematics, RandomTreesFiniteDifferences)
   for(int n : {1, 2, 3, 5, 8, 13, 21, 34, 60})
     for(int trial = 0; trial < 3; ++trial)
     {
-      const auto mb = dyntest::randomModel(rng, n, 0.3).template cast<T>();
+      const auto mb = dyntest::castModel<T>(dyntest::randomModel(rng, n, 0.3));
       for(const auto & j : mb.joints()) backward += j.forward() ? 0 : 1;
       rbd::MultiBodyConfigTpl<T> mbc(mb);
       rbdtest::randomState<T>(rng, mb, mbc, 3.0, 1.0);
@@ -311,7 +311,7 @@ TYPED_TEST(Kinematics, IntegrateMatchesMatrixExponential)
     {
       rbd::MultiBodyGraph graph;
       graph.addBody(rbd::Body(rbdtest::randomInertia(rng), "b"));
-      const auto mb = graph.makeMultiBody("b", rbd::Joint(type, rbdtest::randomUnit(rng), true, "Root")).template cast<T>();
+      const auto mb = dyntest::castModel<T>(graph.makeMultiBody("b", rbd::Joint(type, rbdtest::randomUnit(rng), true, "Root")));
       rbd::MultiBodyConfigTpl<T> mbc(mb);
       rbdtest::randomState<T>(rng, mb, mbc);
       // include tiny and large rotations (series branches and the generic formulas)
@@ -345,7 +345,7 @@ TYPED_TEST(Kinematics, ConfigurationDerivativeMatchesIntegrate)
   rbdtest::Rng rng(42);
   for(const auto & model : dyntest::allJointsModels(rng))
   {
-    const auto mb = model.mb.template cast<T>();
+    const auto mb = dyntest::castModel<T>(model.mb);
     rbd::MultiBodyConfigTpl<T> mbc(mb);
     rbdtest::randomState<T>(rng, mb, mbc);
     const VecX<T> q = dyntest::qOf(mb, mbc), alpha = dyntest::dofOf(mb, mbc.alpha);
@@ -369,7 +369,7 @@ TYPED_TEST(Kinematics, EulerIntegrationExactCases)
   graph.linkBodies("a", rbdtest::randomTransform(rng), "b", rbdtest::randomTransform(rng), "prism");
   graph.linkBodies("b", rbdtest::randomTransform(rng), "c", rbdtest::randomTransform(rng), "cyl");
   graph.linkBodies("c", rbdtest::randomTransform(rng), "d", rbdtest::randomTransform(rng), "rev");
-  const auto mb = graph.makeMultiBody("a", rbd::Joint::Free).template cast<T>();
+  const auto mb = dyntest::castModel<T>(graph.makeMultiBody("a", rbd::Joint::Free));
   rbd::MultiBodyConfigTpl<T> mbc(mb);
   rbdtest::randomState<T>(rng, mb, mbc);
   mbc.alphaD[0] = mb.joint(0).zeroDof();

@@ -75,7 +75,7 @@ TYPED_TEST(Simulation, FreeFloatingTreeConservesMomentumAndEnergy)
   double worstMomentum = 0, worstEnergy = 0;
   for(int trial = 0; trial < 3; ++trial)
   {
-    const auto mb = dyntest::randomModel(rng, 8, 0.3, true).template cast<T>();
+    const auto mb = dyntest::castModel<T>(dyntest::randomModel(rng, 8, 0.3, true));
     rbd::MultiBodyConfigTpl<T> mbc(mb);
     rbdtest::randomState<T>(rng, mb, mbc, 3.0, 1.0);
     mbc.gravity.setZero();

@@ -6,6 +6,7 @@
 #include <new>
 
 extern "C" void * __libc_malloc(std::size_t size); // glibc's own malloc, for the interposed one
+extern "C" void __libc_free(void * p);
 
 namespace rbdgentest
 {
@@ -43,17 +44,17 @@ void * operator new[](std::size_t size)
 }
 void operator delete(void * p) noexcept
 {
-  std::free(p);
+  __libc_free(p);
 }
 void operator delete[](void * p) noexcept
 {
-  std::free(p);
+  __libc_free(p);
 }
 void operator delete(void * p, std::size_t) noexcept
 {
-  std::free(p);
+  __libc_free(p);
 }
 void operator delete[](void * p, std::size_t) noexcept
 {
-  std::free(p);
+  __libc_free(p);
 }

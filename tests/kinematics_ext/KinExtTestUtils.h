@@ -3,6 +3,7 @@
 // scalar, and a local q ⊕ dq (independent of rbd/EulerIntegration.h) for finite differences.
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -16,34 +17,67 @@
 namespace kinext
 {
 
-/// Tolerances: exact = two exact formulas; fd = a central difference with step h.
+/// Tolerances (~15x the largest error measured over the seeded cases): exact = two exact formulas;
+/// solve = through forwardDynamics (cond(H) up to ~1e7 on these trees); fd = a central difference
+/// with step h. (-DKINEXT_MEASURE sets them to ~0, to read the measured errors off the failures.)
 template<typename T>
 struct Prec;
+#ifndef KINEXT_MEASURE
 template<>
 struct Prec<double>
 {
-  static constexpr double exact = 1e-11;
-  static constexpr double fd = 2e-7;
+  static constexpr double exact = 1e-13;
+  static constexpr double solve = 1e-9;
+  static constexpr double fd = 2e-8;
   static constexpr double h = 1e-6;
 };
 template<>
 struct Prec<long double>
 {
-  static constexpr double exact = 1e-14;
-  static constexpr double fd = 2e-9;
+  static constexpr double exact = 1e-15;
+  static constexpr double solve = 2e-13;
+  static constexpr double fd = 1e-10;
   static constexpr double h = 1e-7;
 };
+#else
+template<>
+struct Prec<double>
+{
+  static constexpr double exact = 1e-40, solve = 1e-40, fd = 1e-40, h = 1e-6;
+};
+template<>
+struct Prec<long double>
+{
+  static constexpr double exact = 1e-40, solve = 1e-40, fd = 1e-40, h = 1e-7;
+};
+#endif
 
 using Scalars = ::testing::Types<double, long double>;
 
-/// Random tree of n bodies (every joint type, 30% backward joints) with the given root joint.
+/// X with its rotation re-orthonormalised in T (a double rotation cast to long double is orthonormal
+/// to 1e-16 only, and the algorithms take E^T for E^-1).
+template<typename T>
+sva::PTransform<T> orthonormalized(const sva::PTransform<T> & X)
+{
+  const Eigen::Quaternion<T> quat = Eigen::Quaternion<T>(X.rotation()).normalized();
+  return sva::PTransform<T>(sva::Matrix3<T>(quat.toRotationMatrix()), X.translation());
+}
+
+/// Random tree of n bodies (every joint type) with the given root joint, cast to T with orthonormal
+/// rotations. The tree is rooted at a random body, so that the joints between it and b0 are
+/// backward ones (randomGraph's backwardProbability, asked for too, links child -> parent with
+/// isB1toB2 = false, which is again a forward joint).
 template<typename T>
 rbd::MultiBodyTpl<T> randomModel(rbdtest::Rng & rng, int n, rbd::Joint::Type root)
 {
   rbdtest::RandomTreeOptions opt;
   opt.backwardProbability = 0.3;
   const rbd::MultiBodyGraph mbg = rbdtest::randomGraph(rng, n, opt);
-  return mbg.makeMultiBody("b0", root, rbdtest::randomTransform(rng)).template cast<T>();
+  const std::string rootBody = "b" + std::to_string(std::uniform_int_distribution<int>(0, n - 1)(rng));
+  const auto mb = mbg.makeMultiBody(rootBody, root, rbdtest::randomTransform(rng)).template cast<T>();
+  std::vector<sva::PTransform<T>> Xt;
+  for(const auto & X : mb.transforms()) Xt.push_back(orthonormalized(X));
+  return rbd::MultiBodyTpl<T>(mb.bodies(), mb.joints(), mb.predecessors(), mb.successors(), mb.parents(), Xt);
 }
 
 /// A root joint type drawn among Free, Fixed, Spherical, Planar and Rev.

@@ -290,7 +290,7 @@ TYPED_TEST(JacobianTest, ZeroDofPath)
   rbd::MultiBodyConfigTpl<T> mbc(mb);
   rbdtest::randomState(rng, mb, mbc);
   kinext::kin(mb, mbc);
-  rbd::JacobianTpl<T> jac(mb, "b0", sva::Vector3<T>(T(0.1), T(0.2), T(0.3)));
+  rbd::JacobianTpl<T> jac(mb, mb.body(0).name(), sva::Vector3<T>(T(0.1), T(0.2), T(0.3)));
   EXPECT_EQ(jac.dof(), 0);
   EXPECT_EQ(jac.jacobian(mb, mbc).cols(), 0);
   EXPECT_EQ(jac.jacobianDot(mb, mbc).cols(), 0);

@@ -21,6 +21,7 @@ struct BrokenCase
   ParserOptions opt = {};
 };
 
+const std::string triangleViolation = "ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"3\"";
 const std::string lim = "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>";
 
 std::string robot(const std::string & body, const std::string & attrs = "name=\"bad\"")
@@ -93,8 +94,6 @@ std::vector<BrokenCase> corpus()
        "link", "a", "not positive semi-definite"},
       {"non_psd_offdiagonal", robot(link("a", inertial("1", "ixx=\"1\" ixy=\"2\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\""))),
        "link", "a", "not positive semi-definite"},
-      {"triangle_inequality", robot(link("a", inertial("1", "ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"3\""))),
-       "link", "a", "triangle inequality"},
       {"revolute_without_limit", robot(ab + joint("j", "a", "b", "revolute", "<axis xyz=\"0 0 1\"/>")), "joint", "j",
        "revolute joint without <limit>"},
       {"limits_reversed",
@@ -107,6 +106,10 @@ std::vector<BrokenCase> corpus()
       {"urdfdom_rejects_version", robot(link("a"), "name=\"bad\" version=\"1.x\""), "robot", "bad",
        "malformed URDF or XML (urdfdom:"},
   };
+  BrokenCase triangle{"triangle_inequality_strict", robot(link("a", inertial("1", triangleViolation))), "link", "a",
+                      "violates the triangle inequality"};
+  triangle.opt.strictInertia = true;
+  c.push_back(triangle);
   BrokenCase base{"unknown_base_link", robot(ab + joint("j", "a", "b")), "link", "nope", "unknown base link"};
   base.opt.baseLink = "nope";
   c.push_back(base);
@@ -156,6 +159,10 @@ TEST(LoaderErrors, ValidNeighboursLoad)
   EXPECT_NO_THROW(fromUrdfString(robot(link("a", inertial("0", "ixx=\"0\" ixy=\"0\" ixz=\"0\" iyy=\"0\" iyz=\"0\" izz=\"0\"")))));
   EXPECT_NO_THROW(fromUrdfString(robot(link("a", inertial("1", "ixx=\"0\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"")))));
   EXPECT_NO_THROW(fromUrdfString(robot(link("a", inertial("1", "ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"2\"")))));
+  // Triangle-inequality violations are warnings unless strictInertia.
+  const auto r = fromUrdfString(robot(link("a", inertial("1", triangleViolation))), {}, "tri.urdf");
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(r.warnings[0].rfind("tri.urdf: link 'a': inertia violates the triangle inequality", 0), 0u) << r.warnings[0];
   // Any link as the base.
   ParserOptions opt;
   opt.baseLink = "b";

@@ -2,6 +2,7 @@
 // Test models: random valid inertias, random trees with every joint type, random states.
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -84,10 +85,10 @@ inline rbd::MultiBodyGraph randomGraph(Rng & rng, int n, const RandomTreeOptions
     const int parent = uniform(rng, 0, 1) < opt.chainProbability ? i - 1
                                                                  : std::uniform_int_distribution<int>(0, i - 1)(rng);
     const std::string pn = "b" + std::to_string(parent), cn = "b" + std::to_string(i);
-    if(uniform(rng, 0, 1) < opt.backwardProbability)
-      mbg.linkBodies(cn, randomTransform(rng), pn, randomTransform(rng), jn, false);
-    else
-      mbg.linkBodies(pn, randomTransform(rng), cn, randomTransform(rng), jn, true);
+    // A backward joint moves the parent w.r.t. the child (isB1toB2 = false with b1 = parent), so
+    // the tree rooted at b0 traverses it against its direction.
+    const bool backward = uniform(rng, 0, 1) < opt.backwardProbability;
+    mbg.linkBodies(pn, randomTransform(rng), cn, randomTransform(rng), jn, !backward);
   }
   return mbg;
 }
@@ -141,6 +142,7 @@ rbd::MultiBodyConfigTpl<U> castInputs(const rbd::MultiBodyTpl<U> & mbU, const rb
 template<typename A, typename B>
 double relErr(const Eigen::MatrixBase<A> & a, const Eigen::MatrixBase<B> & b)
 {
+  if(b.size() == 0) return a.size() == 0 ? 0.0 : std::numeric_limits<double>::infinity();
   const double scale = std::max(1.0, static_cast<double>(b.template cast<double>().cwiseAbs().maxCoeff()));
   return static_cast<double>((a.template cast<double>() - b.template cast<double>()).cwiseAbs().maxCoeff()) / scale;
 }

@@ -289,53 +289,6 @@ typename CoMJacobianTpl<T>::Vector3 CoMJacobianTpl<T>::normalAcceleration(
   return a;
 }
 
-template<typename T>
-void CoMJacobianTpl<T>::check(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc, bool needVelocity) const
-{
-  const auto n = static_cast<std::size_t>(mb.nrBodies());
-  if(coeff_.size() != n || jac_.cols() != mb.nrDof())
-    throw std::invalid_argument("CoMJacobian: the MultiBody does not match");
-  if(mbc.bodyPosW.size() != n || mbc.motionSubspace.size() != n ||
-     (needVelocity && (mbc.bodyVelB.size() != n || mbc.jointVelocity.size() != n || mbc.parentToSon.size() != n)))
-    throw std::invalid_argument("CoMJacobian: the MultiBodyConfig does not match the MultiBody");
-  for(int j = 0; j < mb.nrJoints(); ++j)
-    if(mbc.motionSubspace[static_cast<std::size_t>(j)].cols() != mb.joint(j).dof())
-      throw std::invalid_argument("CoMJacobian: motionSubspace of joint '" + mb.joint(j).name() +
-                                  "' does not match its dof");
-}
-
-template<typename T>
-const typename CoMJacobianTpl<T>::MatrixX & CoMJacobianTpl<T>::sJacobian(const MultiBodyTpl<T> & mb,
-                                                                         const MultiBodyConfigTpl<T> & mbc)
-{
-  check(mb, mbc, false);
-  return jacobian(mb, mbc);
-}
-
-template<typename T>
-const typename CoMJacobianTpl<T>::MatrixX & CoMJacobianTpl<T>::sJacobianDot(const MultiBodyTpl<T> & mb,
-                                                                            const MultiBodyConfigTpl<T> & mbc)
-{
-  check(mb, mbc, true);
-  return jacobianDot(mb, mbc);
-}
-
-template<typename T>
-typename CoMJacobianTpl<T>::Vector3 CoMJacobianTpl<T>::sVelocity(const MultiBodyTpl<T> & mb,
-                                                                 const MultiBodyConfigTpl<T> & mbc) const
-{
-  check(mb, mbc, true);
-  return velocity(mb, mbc);
-}
-
-template<typename T>
-typename CoMJacobianTpl<T>::Vector3 CoMJacobianTpl<T>::sNormalAcceleration(const MultiBodyTpl<T> & mb,
-                                                                           const MultiBodyConfigTpl<T> & mbc)
-{
-  check(mb, mbc, true);
-  return normalAcceleration(mb, mbc);
-}
-
 extern template sva::Vector3<double> computeCoM(const MultiBodyTpl<double> &, const MultiBodyConfigTpl<double> &);
 extern template sva::Vector3<long double> computeCoM(const MultiBodyTpl<long double> &,
                                                      const MultiBodyConfigTpl<long double> &);

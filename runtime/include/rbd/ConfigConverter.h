@@ -18,7 +18,8 @@ template<typename T>
 class ConfigConverterTpl
 {
 public:
-  /// Match the joints (but the roots) and bodies present in both models, by name.
+  /// Match by name the joints (but the roots) present in both models with the same type and sizes,
+  /// and the bodies present in both.
   ConfigConverterTpl(const MultiBodyTpl<T> & mb1, const MultiBodyTpl<T> & mb2);
 
   /// Checked construction: throws std::invalid_argument unless both models have the same bodies and
@@ -62,7 +63,8 @@ ConfigConverterTpl<T>::ConfigConverterTpl(const MultiBodyTpl<T> & mb1, const Mul
     const std::string & name = mb1.joint(i).name();
     if(!mb2.hasJoint(name)) continue;
     const int k = mb2.jointIndexByName(name);
-    if(k != 0) jointMap_.emplace_back(i, k);
+    const JointTpl<T> &j1 = mb1.joint(i), &j2 = mb2.joint(k);
+    if(k != 0 && j1.type() == j2.type() && j1.params() == j2.params() && j1.dof() == j2.dof()) jointMap_.emplace_back(i, k);
   }
   for(int i = 0; i < mb1.nrBodies(); ++i)
     if(mb2.hasBody(mb1.body(i).name())) bodyMap_.emplace_back(i, mb2.bodyIndexByName(mb1.body(i).name()));

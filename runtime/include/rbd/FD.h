@@ -91,12 +91,15 @@ public:
       const Eigen::Index di = S_i.cols(), pi = mb.jointPosInDof(i);
       if(di == 0) continue;
       // F = I^c_i S_i, H_ii = S_i^T F
-      Eigen::Matrix<T, 6, Eigen::Dynamic> F = Ic_[static_cast<std::size_t>(i)].matrix() * S_i;
+      Eigen::Matrix<T, 6, Eigen::Dynamic, 0, 6, 6> F = Ic_[static_cast<std::size_t>(i)].matrix() * S_i;
       H_.block(pi, pi, di, di).noalias() = S_i.transpose() * F;
+      for(Eigen::Index r = 1; r < di; ++r) // exact symmetry: mirror the lower triangle
+        for(Eigen::Index c = 0; c < r; ++c) H_(pi + c, pi + r) = H_(pi + r, pi + c);
       // up the path to the root: F = X_p_j^T F, H_ij = F^T S_j (= H_ji^T)
       for(int j = i; mb.parent(j) >= 0;)
       {
-        F = mbc.parentToSon[static_cast<std::size_t>(j)].transMul(F);
+        const auto & X_p_j = mbc.parentToSon[static_cast<std::size_t>(j)];
+        for(Eigen::Index c = 0; c < di; ++c) F.col(c) = X_p_j.transMul(sva::ForceVec<T>(F.col(c))).vector();
         j = mb.parent(j);
         const auto & S_j = mbc.motionSubspace[static_cast<std::size_t>(j)];
         const Eigen::Index dj = S_j.cols(), pj = mb.jointPosInDof(j);

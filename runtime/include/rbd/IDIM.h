@@ -110,7 +110,8 @@ public:
       throw std::invalid_argument("IDIM: the MultiBodyConfig does not match the MultiBody");
     for(int j = 0; j < mb.nrJoints(); ++j)
       if(mbc.motionSubspace[static_cast<std::size_t>(j)].cols() != mb.joint(j).dof())
-        throw std::invalid_argument("IDIM: motionSubspace of joint '" + mb.joint(j).name() + "' does not match its dof");
+        throw std::invalid_argument("IDIM: motionSubspace of joint '" + mb.joint(j).name() +
+                                    "' does not match its dof");
     computeY(mb, mbc);
   }
 

@@ -2,6 +2,7 @@
 // MultiBody: the immutable, topologically sorted kinematic tree (parent[i] < i).
 // Joint i is the joint whose successor is body i; joint 0 is the root joint (predecessor -1).
 
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -80,11 +81,22 @@ public:
     std::vector<sva::PTransform<U>> X;
     for(const auto & body : bodies_) b.push_back(body.template cast<U>());
     for(const auto & joint : joints_) j.push_back(joint.template cast<U>());
-    for(const auto & x : Xt_) X.push_back(x.template cast<U>());
+    for(const auto & x : Xt_) X.push_back(reorthonormalised(x.template cast<U>()));
     return MultiBodyTpl<U>(b, j, pred_, succ_, parent_, X);
   }
 
 private:
+  /// In a wider scalar, make the rotation orthonormal to that precision (Newton iteration for the
+  /// polar factor, E <- (3 E - E E^T E) / 2), so that E^T = E^-1 holds there too.
+  template<typename U>
+  static sva::PTransform<U> reorthonormalised(const sva::PTransform<U> & X)
+  {
+    if(std::numeric_limits<U>::digits <= std::numeric_limits<T>::digits) return X;
+    sva::Matrix3<U> E = X.rotation();
+    for(int k = 0; k < 3; ++k) E = (U(3) * E - E * E.transpose() * E) / U(2);
+    return sva::PTransform<U>(E, X.translation());
+  }
+
   static int lookup(const std::map<std::string, int> & m, const std::string & name, const char * what)
   {
     auto it = m.find(name);

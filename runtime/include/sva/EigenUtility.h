@@ -192,7 +192,7 @@ inline Vector3<T> rotationVelocity(const Matrix3<T> & E_a_b)
   aaT.diagonal().maxCoeff(&k); // a_k^2 >= 1/3
   Vector3<T> axis = aaT.col(k) / sqrt(aaT(k, k));
   axis.normalize();
-  if(axis.dot(s) > T(0))
+  if(axis.dot(s) < T(0))
   {
     axis = -axis;
   }

@@ -30,8 +30,8 @@ class UrdfError : public std::runtime_error
 {
 public:
   UrdfError(const std::string & file, const std::string & element, const std::string & name, const std::string & reason)
-  : std::runtime_error(file + ": " + element + " '" + name + "': " + reason), file_(file), element_(element), name_(name),
-    reason_(reason)
+  : std::runtime_error(oneLine(file + ": " + element + " '" + name + "': " + reason)), file_(file), element_(element),
+    name_(name), reason_(reason)
   {
   }
   const std::string & file() const { return file_; }
@@ -41,6 +41,12 @@ public:
   const std::string & reason() const { return reason_; }
 
 private:
+  static std::string oneLine(std::string s)
+  {
+    for(char & c : s)
+      if(c == '\n' || c == '\r') c = ' ';
+    return s;
+  }
   std::string file_, element_, name_, reason_;
 };
 
@@ -75,6 +81,10 @@ struct ParserOptions
   /// true: filtered subtrees are removed; false: they are merged (at q = 0) into their parent
   /// body, so the mass is kept but their joints disappear.
   bool removeFilteredLinks = true;
+  /// true: an inertia whose principal moments violate the triangle inequality is an error.
+  /// false (default): a warning, as some published URDFs have such inertias (e.g. romeo,
+  /// anymal's dummy 1e-6 inertia). An inertia that is not positive semi-definite is always an error.
+  bool strictInertia = false;
 };
 
 struct ParserResult

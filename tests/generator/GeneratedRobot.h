@@ -1,0 +1,41 @@
+#pragma once
+// A generated robot seen through plain function pointers, so that one test program (compiled
+// once) checks every robot, and each robot's generated header is compiled once, in its own
+// adapter translation unit built with -Werror -fno-exceptions -fno-rtti.
+//
+// Layouts: a pose is 12 values (rotation row-major, then translation); matrices are column-major.
+
+namespace rbdgentest
+{
+
+template<class S>
+struct GeneratedFunctions
+{
+  void (*forwardKinematics)(const S * q, S * poses);       ///< nbodies x 12
+  void (*kinematicsPoses)(const S * q, S * poses);         ///< via kinematics(): nbodies x 12
+  void (*inverseDynamics)(const S * q, const S * alpha, const S * alphaD, S * tau);
+  void (*inverseDynamicsExt)(const S * q, const S * alpha, const S * alphaD, const S * fext, S * tau); ///< fext: nbodies x 6
+  void (*nonlinearEffects)(const S * q, const S * alpha, S * tau);
+  void (*velocityTorques)(const S * q, const S * alpha, S * tau);
+  void (*gravityTorques)(const S * q, S * tau);
+  void (*massMatrix)(const S * q, S * H);                  ///< nv x nv
+  void (*forwardDynamics)(const S * q, const S * alpha, const S * tau, S * alphaD);
+  void (*jacobian)(int body, const S * q, S * J);          ///< via kinematics(): 6 x nv
+  void (*jacobianQ)(int body, const S * q, S * J);         ///< jacobian(body, q)
+  void (*centerOfMass)(const S * q, S * com);              ///< 3
+};
+
+struct GeneratedRobot
+{
+  const char * name;
+  const char * urdf;
+  bool floatingBase;
+  int nq, nv, nbodies;
+  const char * const * bodyNames;
+  const char * const * dofNames;
+  const char * forwardDynamicsAlgorithm;
+  GeneratedFunctions<double> d;
+  GeneratedFunctions<float> f;
+};
+
+} // namespace rbdgentest

@@ -1,0 +1,336 @@
+// Every generated function of every robot against the runtime on seeded random states: double
+// within 1e-12 (max |generated - runtime| / max(1, max |runtime|)), float within the bounds below;
+// no heap allocation during generated calls.
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <rbd/CoM.h>
+#include <rbd/FD.h>
+#include <rbd/FK.h>
+#include <rbd/FV.h>
+#include <rbd/ID.h>
+#include <rbd/Jacobian.h>
+#include <rbd/parsers/urdf.h>
+
+#include "AllocationCounter.h"
+#include "GeneratedRobot.h"
+#include "TestModels.h"
+
+namespace rbdgentest
+{
+/// All robots configured by CMake (robots_list.cpp).
+const std::vector<const GeneratedRobot *> & generatedRobots();
+} // namespace rbdgentest
+
+namespace
+{
+using rbdgentest::GeneratedRobot;
+
+constexpr int kStates = 100;
+constexpr double kTolDouble = 1e-12;
+// float: unit roundoff 6e-8, grown by the recursion depth and magnitudes (measured worst: ~1e-6).
+constexpr double kTolFloatKinematics = 2e-5;
+constexpr double kTolFloatDynamics = 2e-4;
+
+/// The runtime model of the same URDF, with the link frames the generated code reports.
+struct Reference
+{
+  rbd::parsers::ParserResult robot;
+  std::vector<sva::PTransformd> X_mb_link; // MultiBody body frame -> URDF link frame
+  rbd::MultiBodyConfig mbc;
+
+  explicit Reference(const GeneratedRobot & g)
+  {
+    rbd::parsers::ParserOptions opt;
+    opt.fixed = !g.floatingBase;
+    robot = rbd::parsers::fromUrdfFile(g.urdf, opt);
+    for(const auto & b : robot.mb.bodies())
+    {
+      const auto it = robot.bodyBaseTransforms.find(b.name());
+      X_mb_link.push_back(it == robot.bodyBaseTransforms.end() ? sva::PTransformd::Identity() : it->second.inv());
+    }
+    mbc = rbd::MultiBodyConfig(robot.mb);
+  }
+  const rbd::MultiBody & mb() const { return robot.mb; }
+
+  void sample(rbdtest::Rng & rng)
+  {
+    rbdtest::randomState(rng, mb(), mbc);
+    rbd::forwardKinematics(mb(), mbc);
+    rbd::forwardVelocity(mb(), mbc);
+  }
+  Eigen::VectorXd q() const { return rbd::paramToVector(mb(), mbc.q); }
+  Eigen::VectorXd alpha() const { return rbd::dofToVector(mb(), mbc.alpha); }
+  Eigen::VectorXd alphaD() const { return rbd::dofToVector(mb(), mbc.alphaD); }
+  Eigen::VectorXd torque() const { return rbd::dofToVector(mb(), mbc.jointTorque); }
+
+  /// Runtime inverse dynamics with the selected terms.
+  Eigen::VectorXd id(bool velocity, bool acceleration, bool gravity) const
+  {
+    rbd::MultiBodyConfig c = mbc;
+    if(!velocity)
+      for(auto & a : c.alpha) std::fill(a.begin(), a.end(), 0.0);
+    if(!acceleration)
+      for(auto & a : c.alphaD) std::fill(a.begin(), a.end(), 0.0);
+    if(!gravity) c.gravity.setZero();
+    rbd::forwardVelocity(mb(), c);
+    rbd::InverseDynamics idr(mb());
+    idr.inverseDynamics(mb(), c);
+    return rbd::dofToVector(mb(), c.jointTorque);
+  }
+};
+
+Eigen::VectorXf toFloat(const Eigen::VectorXd & v)
+{
+  return v.cast<float>();
+}
+
+template<class A, class B>
+double err(const Eigen::MatrixBase<A> & a, const Eigen::MatrixBase<B> & b)
+{
+  return rbdtest::relErr(a, b);
+}
+
+/// Worst errors of one function over all states, printed at the end of a test.
+struct ErrorLog
+{
+  const char * what;
+  double worstDouble = 0, worstFloat = 0;
+  void add(double ed, double ef)
+  {
+    worstDouble = std::max(worstDouble, ed);
+    worstFloat = std::max(worstFloat, ef);
+  }
+  ~ErrorLog() { std::printf("[ %-24s ] worst relative error: double %.3g, float %.3g\n", what, worstDouble, worstFloat); }
+};
+
+class Generated : public ::testing::TestWithParam<const GeneratedRobot *>
+{
+protected:
+  const GeneratedRobot & g() const { return *GetParam(); }
+};
+
+TEST_P(Generated, ForwardKinematics)
+{
+  Reference ref(g());
+  ASSERT_EQ(ref.mb().nrParams(), g().nq);
+  ASSERT_EQ(ref.mb().nrDof(), g().nv);
+  ASSERT_EQ(ref.mb().nrBodies(), g().nbodies);
+  for(int i = 0; i < g().nbodies; ++i) EXPECT_EQ(ref.mb().body(i).name(), g().bodyNames[i]);
+  rbdtest::Rng rng(1);
+  ErrorLog log{"forward_kinematics"}, kinLog{"kinematics"};
+  Eigen::VectorXd poses(12 * g().nbodies), posesK(12 * g().nbodies);
+  Eigen::VectorXf posesF(12 * g().nbodies);
+  for(int s = 0; s < kStates; ++s)
+  {
+    ref.sample(rng);
+    const Eigen::VectorXd q = ref.q();
+    const Eigen::VectorXf qf = toFloat(q);
+    g().d.forwardKinematics(q.data(), poses.data());
+    g().d.kinematicsPoses(q.data(), posesK.data());
+    g().f.forwardKinematics(qf.data(), posesF.data());
+    for(int i = 0; i < g().nbodies; ++i)
+    {
+      const sva::PTransformd X = ref.X_mb_link[static_cast<std::size_t>(i)] * ref.mbc.bodyPosW[static_cast<std::size_t>(i)];
+      Eigen::Matrix<double, 12, 1> expected;
+      for(int r = 0; r < 3; ++r)
+        for(int c = 0; c < 3; ++c) expected(3 * r + c) = X.rotation()(r, c);
+      expected.tail<3>() = X.translation();
+      const double ed = err(poses.segment<12>(12 * i), expected);
+      const double ef = err(posesF.segment<12>(12 * i), expected);
+      ASSERT_LE(ed, kTolDouble) << "link " << g().bodyNames[i];
+      ASSERT_LE(ef, kTolFloatKinematics) << "link " << g().bodyNames[i];
+      log.add(ed, ef);
+      kinLog.add(err(posesK.segment<12>(12 * i), expected), 0);
+    }
+  }
+  EXPECT_LE(kinLog.worstDouble, kTolDouble);
+}
+
+TEST_P(Generated, InverseDynamics)
+{
+  Reference ref(g());
+  rbdtest::Rng rng(2);
+  ErrorLog idLog{"inverse_dynamics"}, nleLog{"nonlinear_effects"}, gLog{"gravity_torques"}, vLog{"velocity_torques"},
+      extLog{"inverse_dynamics(fext)"};
+  const int nv = g().nv;
+  Eigen::VectorXd tau(nv);
+  Eigen::VectorXf tauF(nv);
+  for(int s = 0; s < kStates; ++s)
+  {
+    ref.sample(rng);
+    const Eigen::VectorXd q = ref.q(), a = ref.alpha(), ad = ref.alphaD();
+    const Eigen::VectorXf qf = toFloat(q), af = toFloat(a), adf = toFloat(ad);
+    auto check = [&](ErrorLog & log, const Eigen::VectorXd & expected) {
+      log.add(err(tau, expected), err(tauF, expected));
+    };
+    g().d.inverseDynamics(q.data(), a.data(), ad.data(), tau.data());
+    g().f.inverseDynamics(qf.data(), af.data(), adf.data(), tauF.data());
+    check(idLog, ref.id(true, true, true));
+    g().d.nonlinearEffects(q.data(), a.data(), tau.data());
+    g().f.nonlinearEffects(qf.data(), af.data(), tauF.data());
+    check(nleLog, ref.id(true, false, true));
+    g().d.gravityTorques(q.data(), tau.data());
+    g().f.gravityTorques(qf.data(), tauF.data());
+    check(gLog, ref.id(false, false, true));
+    g().d.velocityTorques(q.data(), a.data(), tau.data());
+    g().f.velocityTorques(qf.data(), af.data(), tauF.data());
+    check(vLog, ref.id(true, false, false));
+
+    // An external wrench on every link (world coordinates at the world origin).
+    Eigen::VectorXd fext(6 * g().nbodies);
+    for(int i = 0; i < fext.size(); ++i) fext(i) = rbdtest::uniform(rng, -5, 5);
+    const Eigen::VectorXf fextF = toFloat(fext);
+    Reference & r = ref;
+    for(int i = 0; i < g().nbodies; ++i)
+      r.mbc.force[static_cast<std::size_t>(i)] = sva::ForceVecd(Eigen::Matrix<double, 6, 1>(fext.segment<6>(6 * i)));
+    const Eigen::VectorXd extExpected = ref.id(true, true, true);
+    for(auto & f : r.mbc.force) f = sva::ForceVecd::Zero();
+    g().d.inverseDynamicsExt(q.data(), a.data(), ad.data(), fext.data(), tau.data());
+    g().f.inverseDynamicsExt(qf.data(), af.data(), adf.data(), fextF.data(), tauF.data());
+    check(extLog, extExpected);
+  }
+  for(const ErrorLog * l : {&idLog, &nleLog, &gLog, &vLog, &extLog})
+  {
+    EXPECT_LE(l->worstDouble, kTolDouble) << l->what;
+    EXPECT_LE(l->worstFloat, kTolFloatDynamics) << l->what;
+  }
+}
+
+TEST_P(Generated, MassMatrixAndForwardDynamics)
+{
+  Reference ref(g());
+  rbdtest::Rng rng(3);
+  rbd::ForwardDynamics fdr(ref.mb());
+  ErrorLog hLog{"mass_matrix"}, fdLog{"forward_dynamics"};
+  const int nv = g().nv;
+  Eigen::MatrixXd H(nv, nv);
+  Eigen::MatrixXf HF(nv, nv);
+  Eigen::VectorXd ad(nv);
+  Eigen::VectorXf adF(nv);
+  double worstCond = 0;
+  bool singular = false;
+  for(int s = 0; s < kStates; ++s)
+  {
+    ref.sample(rng);
+    const Eigen::VectorXd q = ref.q(), a = ref.alpha(), tau = ref.torque();
+    const Eigen::VectorXf qf = toFloat(q), af = toFloat(a), tauf = toFloat(tau);
+    fdr.computeH(ref.mb(), ref.mbc);
+    const Eigen::MatrixXd Href = fdr.H();
+    g().d.massMatrix(q.data(), H.data());
+    g().f.massMatrix(qf.data(), HF.data());
+    hLog.add(err(H, Href), err(HF, Href));
+    const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Href).eigenvalues();
+    const double cond = ev.maxCoeff() / ev.minCoeff();
+    if(!(ev.minCoeff() > 0) || cond > 1e12)
+    {
+      singular = true; // forward dynamics undefined here: the stability issue sets the policy
+      continue;
+    }
+    worstCond = std::max(worstCond, cond);
+    rbd::MultiBodyConfig c = ref.mbc;
+    fdr.forwardDynamics(ref.mb(), c);
+    const Eigen::VectorXd adRef = rbd::dofToVector(ref.mb(), c.alphaD);
+    g().d.forwardDynamics(q.data(), a.data(), tau.data(), ad.data());
+    g().f.forwardDynamics(qf.data(), af.data(), tauf.data(), adF.data());
+    const double ed = err(ad, adRef), ef = err(adF, adRef);
+    // Two backward-stable solvers differ by ~cond(H) eps: the bound grows with the conditioning.
+    EXPECT_LE(ed, kTolDouble * std::max(1.0, cond * 1e-3)) << "cond(H) = " << cond;
+    EXPECT_LE(ef, kTolFloatDynamics * std::max(1.0, cond * 1e-3)) << "cond(H) = " << cond;
+    fdLog.add(ed, ef);
+  }
+  std::printf("[ %-24s ] worst cond(H) %.3g%s\n", "forward_dynamics", worstCond,
+              singular ? " (singular mass matrix met: forward dynamics skipped there)" : "");
+  EXPECT_LE(hLog.worstDouble, kTolDouble);
+  EXPECT_LE(hLog.worstFloat, kTolFloatDynamics);
+}
+
+TEST_P(Generated, JacobianAndCenterOfMass)
+{
+  Reference ref(g());
+  rbdtest::Rng rng(4);
+  std::vector<rbd::Jacobian> jacs;
+  for(int i = 0; i < g().nbodies; ++i)
+  {
+    // the link origin, in its MultiBody body frame
+    const Eigen::Vector3d p = ref.X_mb_link[static_cast<std::size_t>(i)].inv().translation();
+    jacs.emplace_back(ref.mb(), ref.mb().body(i).name(), p);
+  }
+  ErrorLog jLog{"jacobian"}, cLog{"center_of_mass"};
+  const int nv = g().nv;
+  Eigen::MatrixXd J(6, nv), JQ(6, nv), full;
+  Eigen::MatrixXf JF(6, nv);
+  Eigen::Vector3d com;
+  Eigen::Vector3f comF;
+  for(int s = 0; s < kStates / 4; ++s)
+  {
+    ref.sample(rng);
+    const Eigen::VectorXd q = ref.q();
+    const Eigen::VectorXf qf = toFloat(q);
+    for(int i = 0; i < g().nbodies; ++i)
+    {
+      auto & jac = jacs[static_cast<std::size_t>(i)];
+      jac.fullJacobian(ref.mb(), jac.jacobian(ref.mb(), ref.mbc), full);
+      g().d.jacobian(i, q.data(), J.data());
+      g().d.jacobianQ(i, q.data(), JQ.data());
+      g().f.jacobian(i, qf.data(), JF.data());
+      jLog.add(err(J, full), err(JF, full));
+      ASSERT_EQ(J, JQ) << "jacobian(body, q) != jacobian(body, kinematics(q))";
+    }
+    g().d.centerOfMass(q.data(), com.data());
+    g().f.centerOfMass(qf.data(), comF.data());
+    const Eigen::Vector3d comRef = rbd::computeCoM(ref.mb(), ref.mbc);
+    cLog.add(err(com, comRef), err(comF, comRef));
+  }
+  EXPECT_LE(jLog.worstDouble, kTolDouble);
+  EXPECT_LE(jLog.worstFloat, kTolFloatKinematics);
+  EXPECT_LE(cLog.worstDouble, kTolDouble);
+  EXPECT_LE(cLog.worstFloat, kTolFloatKinematics);
+}
+
+TEST_P(Generated, NoHeapAllocation)
+{
+  Reference ref(g());
+  rbdtest::Rng rng(5);
+  ref.sample(rng);
+  const Eigen::VectorXd q = ref.q(), a = ref.alpha(), ad = ref.alphaD();
+  const int nv = g().nv, nb = g().nbodies;
+  Eigen::VectorXd out(std::max(12 * nb, 6 * nv) + nv * nv), fext = Eigen::VectorXd::Zero(6 * nb);
+  long count = 0;
+  {
+    rbdgentest::AllocationScope scope;
+    g().d.forwardKinematics(q.data(), out.data());
+    g().d.kinematicsPoses(q.data(), out.data());
+    g().d.inverseDynamics(q.data(), a.data(), ad.data(), out.data());
+    g().d.inverseDynamicsExt(q.data(), a.data(), ad.data(), fext.data(), out.data());
+    g().d.nonlinearEffects(q.data(), a.data(), out.data());
+    g().d.velocityTorques(q.data(), a.data(), out.data());
+    g().d.gravityTorques(q.data(), out.data());
+    g().d.massMatrix(q.data(), out.data());
+    g().d.forwardDynamics(q.data(), a.data(), ad.data(), out.data());
+    g().d.jacobian(nb - 1, q.data(), out.data());
+    g().d.centerOfMass(q.data(), out.data());
+    count = scope.count();
+  }
+  EXPECT_EQ(count, 0) << "heap allocations during generated calls";
+  {
+    // the counter itself must see an allocation
+    rbdgentest::AllocationScope scope;
+    std::vector<double> v(100, out(0));
+    EXPECT_GT(scope.count(), 0);
+  }
+}
+
+std::string robotName(const ::testing::TestParamInfo<const GeneratedRobot *> & info)
+{
+  return info.param->name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Robots, Generated, ::testing::ValuesIn(rbdgentest::generatedRobots()), robotName);
+
+} // namespace

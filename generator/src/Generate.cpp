@@ -108,6 +108,11 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   v["fn_forward_dynamics"] = emit::forwardDynamicsBody(rm).text;
   v["fn_jacobian"] = emit::jacobianBody(rm).text;
   v["fn_center_of_mass"] = emit::centerOfMassBody(rm).text;
+  v["fn_body_velocities"] = emit::bodyVelocitiesBody(rm).text;
+  v["fn_body_accelerations"] = emit::bodyAccelerationsBody(rm).text;
+  v["fn_jacobian_dot_times_alpha"] = emit::jacobianDotTimesAlphaBody(rm).text;
+  v["fn_com_jacobian"] = emit::comJacobianBody(rm).text;
+  v["fn_centroidal_momentum_matrix"] = emit::centroidalMomentumMatrixBody(rm).text;
   const auto & templates = embeddedTemplates();
   const auto it = templates.find("dynamics.hpp.in");
   if(it == templates.end()) throw std::logic_error("template dynamics.hpp.in is not embedded");
@@ -122,7 +127,7 @@ std::vector<GeneratedFile> generateFiles(const GenerateOptions & opt)
   const rbd::parsers::ParserResult robot = rbd::parsers::fromUrdfFile(opt.urdf, po);
   const RobotModel rm = robotModelFromUrdf(robot);
   const std::string ns = opt.ns.empty() ? sanitizeIdentifier(robot.name) : opt.ns;
-  if(ns != sanitizeIdentifier(ns)) throw std::invalid_argument("--namespace '" + ns + "': not a valid C++ identifier");
+  if(ns != sanitizeIdentifier(ns)) throw std::invalid_argument("--namespace '" + ns + "': not a valid C++ identifier (or a keyword)");
   const std::string options = fmt::format("{}{}", opt.floatingBase ? "floating base" : "fixed base",
                                           opt.baseLink.empty() ? "" : ", base link " + opt.baseLink);
   const std::string text = readFile(opt.urdf);
@@ -134,6 +139,7 @@ std::vector<std::string> writeFiles(const std::string & outDir, const std::vecto
 {
   std::vector<std::pair<fs::path, fs::path>> staged; // temporary -> final
   std::vector<std::string> written;
+  fs::path createdRoot;
   try
   {
     for(const GeneratedFile & f : files)
@@ -147,6 +153,8 @@ std::vector<std::string> writeFiles(const std::string & outDir, const std::vecto
         const std::string old((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         if(old == f.content) continue; // unchanged: keep the file and its mtime
       }
+      // Remember the first directory we create, to take it away again if anything fails.
+      for(fs::path d = dst.parent_path(); !d.empty() && !fs::exists(d, ec); d = d.parent_path()) createdRoot = d;
       fs::create_directories(dst.parent_path(), ec);
       if(ec) throw std::runtime_error(dst.parent_path().string() + ": cannot create directory: " + ec.message());
       const fs::path tmp = dst.string() + ".rbdgen-tmp";
@@ -168,11 +176,9 @@ std::vector<std::string> writeFiles(const std::string & outDir, const std::vecto
   }
   catch(...)
   {
-    for(const auto & st : staged)
-    {
-      std::error_code ec;
-      fs::remove(st.first, ec);
-    }
+    std::error_code ec;
+    for(const auto & st : staged) fs::remove(st.first, ec);
+    if(!createdRoot.empty()) fs::remove_all(createdRoot, ec);
     throw;
   }
   return written;

@@ -41,6 +41,19 @@ void printTree(std::ostream & os, const rbd::MultiBody & mb)
   }
 }
 
+/// Unit of generalized force k of joint j: N m for a rotation, N for a translation.
+const char * torqueUnit(const rbd::Joint & j, std::size_t k)
+{
+  switch(j.type())
+  {
+    case rbd::Joint::Prism: return "N";
+    case rbd::Joint::Cylindrical: return k == 0 ? "N m" : "N";
+    case rbd::Joint::Planar: return k == 0 ? "N m" : "N";
+    case rbd::Joint::Free: return k < 3 ? "N m" : "N";
+    default: return "N m"; // Rev, Spherical
+  }
+}
+
 } // namespace
 
 void printInfo(std::ostream & os, const rbd::parsers::ParserResult & robot)
@@ -65,7 +78,7 @@ void printInfo(std::ostream & os, const rbd::parsers::ParserResult & robot)
   for(int i = 0; i < mb.nrJoints(); ++i)
     for(std::size_t k = 0; k < mbc.jointTorque[static_cast<std::size_t>(i)].size(); ++k)
       fmt::print(os, "  tau[{}][{}] = {:+.6f} {}\n", mb.joint(i).name(), k, mbc.jointTorque[static_cast<std::size_t>(i)][k],
-                 mb.joint(i).type() == rbd::Joint::Prism ? "N" : "N m or N");
+                 torqueUnit(mb.joint(i), k));
 }
 
 } // namespace rbdgen

@@ -1,6 +1,9 @@
 // rbdgen command line: `rbdgen generate ROBOT.urdf --out DIR`, `rbdgen info ROBOT.urdf`.
-// Exit code 0 only on success; errors are one line on stderr and leave no partial output.
+// Exit code 0 only on success; every error is one line on stderr ("rbdgen: error: <file>: ...")
+// and leaves no partial output.
+#include <algorithm>
 #include <iostream>
+#include <set>
 
 #include <CLI/CLI.hpp>
 
@@ -34,11 +37,22 @@ struct RobotOptions
   }
 };
 
+/// "rbdgen: error: <message>" on one line (newlines in the message become spaces).
+std::string errorLine(std::string message)
+{
+  std::replace(message.begin(), message.end(), '\n', ' ');
+  std::replace(message.begin(), message.end(), '\r', ' ');
+  return "rbdgen: error: " + message + "\n";
+}
+
 } // namespace
 
 int main(int argc, char ** argv)
 {
   CLI::App app{"rbdgen: a compiler for robot dynamics (URDF -> unrolled C++)"};
+  // Before the subcommands are added: they copy it. One line, as every other error.
+  app.failure_message(
+      [](const CLI::App *, const CLI::Error & e) { return errorLine(std::string(e.what()) + " (see rbdgen --help)"); });
   app.set_version_flag("--version", std::string("rbdgen ") + RBDGEN_VERSION);
   app.require_subcommand(1);
 
@@ -62,6 +76,7 @@ int main(int argc, char ** argv)
     return app.exit(e);
   }
 
+  const std::string & urdf = info->parsed() ? infoRobot.urdf : genRobot.urdf;
   try
   {
     if(info->parsed()) rbdgen::printInfo(std::cout, infoRobot.load());
@@ -76,9 +91,14 @@ int main(int argc, char ** argv)
       for(const auto & path : rbdgen::writeFiles(outDir, rbdgen::generateFiles(opt))) std::cout << path << "\n";
     }
   }
+  catch(const rbd::parsers::UrdfError & e)
+  {
+    std::cerr << errorLine(e.what()); // already "<file>: <element> '<name>': <reason>"
+    return 1;
+  }
   catch(const std::exception & e)
   {
-    std::cerr << "rbdgen: error: " << e.what() << "\n";
+    std::cerr << errorLine(urdf + ": " + e.what()); // namespace, output directory...
     return 1;
   }
   return 0;

@@ -293,7 +293,8 @@ TEST(DynamicsPrecision, DoubleAgreesWithLongDouble)
       rbd::InverseDynamicsTpl<long double> idL(mbL);
       id.inverseDynamics(s.mb, s.mbc);
       idL.inverseDynamics(mbL, mbcL);
-      eTau = std::max(eTau, rbdtest::relErr(dyntest::dofOf(s.mb, s.mbc.jointTorque), dyntest::dofOf(mbL, mbcL.jointTorque)));
+      eTau = std::max(eTau, rbdtest::relErr(dyntest::dofOf(s.mb, s.mbc.jointTorque),
+                                            dyntest::dofOf(mbL, mbcL.jointTorque)));
 
       rbd::ForwardDynamics fd(s.mb);
       rbd::ForwardDynamicsTpl<long double> fdL(mbL);

@@ -116,7 +116,8 @@ TYPED_TEST(Kinematics, Planar2RArmBackwardClosedForm)
   {
     for(const char * jn : {"j1", "j2"})
     {
-      const T q = T(rbdtest::uniform(rng, -3, 3)), a = T(rbdtest::uniform(rng, -2, 2)), ad = T(rbdtest::uniform(rng, -2, 2));
+      const T q = T(rbdtest::uniform(rng, -3, 3)), a = T(rbdtest::uniform(rng, -2, 2));
+      const T ad = T(rbdtest::uniform(rng, -2, 2));
       for(auto * c : {&cf, &cb})
       {
         const auto k = static_cast<std::size_t>((c == &cf ? fwd : bwd).jointIndexByName(jn));
@@ -162,7 +163,10 @@ TEST(KinematicsAllJoints, RelativePosesIndependentOfRoot)
       rbd::MultiBodyConfig mbc(mb);
       rbdtest::randomState(rng, mb, mbc);
       for(int i = 1; i < mb.nrJoints(); ++i)
-        mbc.q[static_cast<std::size_t>(i)] = ref.q[static_cast<std::size_t>(models[0].mb.jointIndexByName(mb.joint(i).name()))];
+      {
+        const int iRef = models[0].mb.jointIndexByName(mb.joint(i).name());
+        mbc.q[static_cast<std::size_t>(i)] = ref.q[static_cast<std::size_t>(iRef)];
+      }
       rbd::forwardKinematics(mb, mbc);
       for(int i = 0; i < mb.nrBodies(); ++i)
       {
@@ -311,7 +315,8 @@ TYPED_TEST(Kinematics, IntegrateMatchesMatrixExponential)
     {
       rbd::MultiBodyGraph graph;
       graph.addBody(rbd::Body(rbdtest::randomInertia(rng), "b"));
-      const auto mb = dyntest::castModel<T>(graph.makeMultiBody("b", rbd::Joint(type, rbdtest::randomUnit(rng), true, "Root")));
+      const rbd::Joint root(type, rbdtest::randomUnit(rng), true, "Root");
+      const auto mb = dyntest::castModel<T>(graph.makeMultiBody("b", root));
       rbd::MultiBodyConfigTpl<T> mbc(mb);
       rbdtest::randomState<T>(rng, mb, mbc);
       // include tiny and large rotations (series branches and the generic formulas)
@@ -332,7 +337,7 @@ TYPED_TEST(Kinematics, IntegrateMatchesMatrixExponential)
       if(type == rbd::JointType::Spherical || type == rbd::JointType::Free)
       {
         using std::abs;
-        const T norm2 = qNew[0][0] * qNew[0][0] + qNew[0][1] * qNew[0][1] + qNew[0][2] * qNew[0][2] + qNew[0][3] * qNew[0][3];
+        const T norm2 = Eigen::Matrix<T, 4, 1>(qNew[0][0], qNew[0][1], qNew[0][2], qNew[0][3]).squaredNorm();
         EXPECT_LE(static_cast<double>(abs(norm2 - T(1))), dyntest::tol<T>(1e-15, 1e-18));
       }
     }
@@ -378,7 +383,8 @@ TYPED_TEST(Kinematics, EulerIntegrationExactCases)
   const T dt = T(0.01), total = dt * T(steps);
   for(int s = 0; s < steps; ++s) rbd::eulerIntegration(mb, mbc, dt);
   // root: q ⊕ (alpha total); vector joints: q + alpha t + alphaD t^2 / 2; alpha + alphaD t
-  const VecX<T> q0 = dyntest::qOf(mb, start), a0 = dyntest::dofOf(mb, start.alpha), ad = dyntest::dofOf(mb, start.alphaD);
+  const VecX<T> q0 = dyntest::qOf(mb, start), a0 = dyntest::dofOf(mb, start.alpha);
+  const VecX<T> ad = dyntest::dofOf(mb, start.alphaD);
   VecX<T> expectedQ = q0;
   expectedQ.tail(mb.nrParams() - 7) += (a0 * total + ad * total * total / T(2)).tail(mb.nrDof() - 6);
   VecX<T> rootOnly = VecX<T>::Zero(mb.nrDof());

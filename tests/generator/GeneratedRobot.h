@@ -23,13 +23,20 @@ struct GeneratedFunctions
   void (*jacobian)(int body, const S * q, S * J);          ///< via kinematics(): 6 x nv
   void (*jacobianQ)(int body, const S * q, S * J);         ///< jacobian(body, q)
   void (*centerOfMass)(const S * q, S * com);              ///< 3
+  void (*bodyVelocities)(const S * q, const S * alpha, S * v);                       ///< nbodies x 6
+  void (*bodyAccelerations)(const S * q, const S * alpha, const S * alphaD, S * a);  ///< nbodies x 6
+  void (*jacobianDotTimesAlpha)(int body, const S * q, const S * alpha, S * out);   ///< 6
+  void (*comJacobian)(const S * q, S * J);                 ///< 3 x nv
+  void (*centroidalMomentumMatrix)(const S * q, S * A);    ///< 6 x nv
 };
 
 struct GeneratedRobot
 {
   const char * name;
-  const char * urdf;
+  const char * urdf;         ///< URDF path, or empty for a programmatic model
   bool floatingBase;
+  const char * baseLink;     ///< empty: the URDF root
+  int programmaticModel;     ///< index into programmaticModel(), -1 for a URDF
   int nq, nv, nbodies;
   const char * const * bodyNames;
   const char * const * dofNames;

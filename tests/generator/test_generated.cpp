@@ -10,6 +10,8 @@
 #include <Eigen/Eigenvalues>
 
 #include <rbd/CoM.h>
+#include <rbd/FA.h>
+#include <rbd/Momentum.h>
 #include <rbd/FD.h>
 #include <rbd/FK.h>
 #include <rbd/FV.h>
@@ -19,6 +21,7 @@
 
 #include "AllocationCounter.h"
 #include "GeneratedRobot.h"
+#include "ProgrammaticModels.h"
 #include "TestModels.h"
 
 namespace rbdgentest
@@ -46,9 +49,15 @@ struct Reference
 
   explicit Reference(const GeneratedRobot & g)
   {
-    rbd::parsers::ParserOptions opt;
-    opt.fixed = !g.floatingBase;
-    robot = rbd::parsers::fromUrdfFile(g.urdf, opt);
+    if(g.programmaticModel >= 0)
+      robot.mb = rbdgentest::programmaticModel(g.programmaticModel).mb;
+    else
+    {
+      rbd::parsers::ParserOptions opt;
+      opt.fixed = !g.floatingBase;
+      opt.baseLink = g.baseLink;
+      robot = rbd::parsers::fromUrdfFile(g.urdf, opt);
+    }
     for(const auto & b : robot.mb.bodies())
     {
       const auto it = robot.bodyBaseTransforms.find(b.name());
@@ -258,7 +267,7 @@ TEST_P(Generated, JacobianAndCenterOfMass)
   for(int i = 0; i < g().nbodies; ++i)
   {
     // the link origin, in its MultiBody body frame
-    const Eigen::Vector3d p = ref.X_mb_link[static_cast<std::size_t>(i)].inv().translation();
+    const Eigen::Vector3d p = ref.X_mb_link[static_cast<std::size_t>(i)].translation();
     jacs.emplace_back(ref.mb(), ref.mb().body(i).name(), p);
   }
   ErrorLog jLog{"jacobian"}, cLog{"center_of_mass"};
@@ -293,6 +302,63 @@ TEST_P(Generated, JacobianAndCenterOfMass)
   EXPECT_LE(cLog.worstFloat, kTolFloatKinematics);
 }
 
+TEST_P(Generated, VelocitiesAccelerationsMomentum)
+{
+  Reference ref(g());
+  rbdtest::Rng rng(6);
+  std::vector<rbd::Jacobian> jacs;
+  for(int i = 0; i < g().nbodies; ++i)
+    jacs.emplace_back(ref.mb(), ref.mb().body(i).name(), ref.X_mb_link[static_cast<std::size_t>(i)].translation());
+  rbd::CoMJacobian comJac(ref.mb());
+  rbd::CentroidalMomentumMatrix cmm(ref.mb());
+  ErrorLog vLog{"body_velocities"}, aLog{"body_accelerations"}, jdLog{"jacobian_dot_times_alpha"},
+      cjLog{"com_jacobian"}, cmmLog{"centroidal_momentum_matrix"};
+  const int nv = g().nv, nb = g().nbodies;
+  Eigen::VectorXd v(6 * nb), a(6 * nb);
+  Eigen::VectorXf vF(6 * nb), aF(6 * nb);
+  Eigen::Matrix<double, 6, 1> jd;
+  Eigen::Matrix<float, 6, 1> jdF;
+  Eigen::MatrixXd CJ(3, nv), A(6, nv);
+  Eigen::MatrixXf CJF(3, nv), AF(6, nv);
+  for(int s = 0; s < kStates / 4; ++s)
+  {
+    ref.sample(rng);
+    rbd::forwardAcceleration(ref.mb(), ref.mbc);
+    const Eigen::VectorXd q = ref.q(), al = ref.alpha(), ad = ref.alphaD();
+    const Eigen::VectorXf qf = toFloat(q), alf = toFloat(al), adf = toFloat(ad);
+    g().d.bodyVelocities(q.data(), al.data(), v.data());
+    g().f.bodyVelocities(qf.data(), alf.data(), vF.data());
+    g().d.bodyAccelerations(q.data(), al.data(), ad.data(), a.data());
+    g().f.bodyAccelerations(qf.data(), alf.data(), adf.data(), aF.data());
+    Eigen::VectorXd vRef(6 * nb), aRef(6 * nb);
+    for(int i = 0; i < nb; ++i)
+    {
+      const auto k = static_cast<std::size_t>(i);
+      vRef.segment<6>(6 * i) = (ref.X_mb_link[k] * ref.mbc.bodyVelB[k]).vector();
+      aRef.segment<6>(6 * i) = (ref.X_mb_link[k] * ref.mbc.bodyAccB[k]).vector();
+      g().d.jacobianDotTimesAlpha(i, q.data(), al.data(), jd.data());
+      g().f.jacobianDotTimesAlpha(i, qf.data(), alf.data(), jdF.data());
+      const Eigen::Matrix<double, 6, 1> jdRef = jacs[k].normalAcceleration(ref.mb(), ref.mbc).vector();
+      jdLog.add(err(jd, jdRef), err(jdF, jdRef));
+    }
+    vLog.add(err(v, vRef), err(vF, vRef));
+    aLog.add(err(a, aRef), err(aF, aRef));
+    g().d.comJacobian(q.data(), CJ.data());
+    g().f.comJacobian(qf.data(), CJF.data());
+    const Eigen::MatrixXd CJRef = comJac.jacobian(ref.mb(), ref.mbc);
+    cjLog.add(err(CJ, CJRef), err(CJF, CJRef));
+    g().d.centroidalMomentumMatrix(q.data(), A.data());
+    g().f.centroidalMomentumMatrix(qf.data(), AF.data());
+    cmm.computeMatrix(ref.mb(), ref.mbc, rbd::computeCoM(ref.mb(), ref.mbc));
+    cmmLog.add(err(A, cmm.matrix()), err(AF, cmm.matrix()));
+  }
+  for(const ErrorLog * l : {&vLog, &aLog, &jdLog, &cjLog, &cmmLog})
+  {
+    EXPECT_LE(l->worstDouble, kTolDouble) << l->what;
+    EXPECT_LE(l->worstFloat, kTolFloatDynamics) << l->what;
+  }
+}
+
 TEST_P(Generated, NoHeapAllocation)
 {
   Reference ref(g());
@@ -315,6 +381,11 @@ TEST_P(Generated, NoHeapAllocation)
     g().d.forwardDynamics(q.data(), a.data(), ad.data(), out.data());
     g().d.jacobian(nb - 1, q.data(), out.data());
     g().d.centerOfMass(q.data(), out.data());
+    g().d.bodyVelocities(q.data(), a.data(), out.data());
+    g().d.bodyAccelerations(q.data(), a.data(), ad.data(), out.data());
+    g().d.jacobianDotTimesAlpha(nb - 1, q.data(), a.data(), out.data());
+    g().d.comJacobian(q.data(), out.data());
+    g().d.centroidalMomentumMatrix(q.data(), out.data());
     count = scope.count();
   }
   EXPECT_EQ(count, 0) << "heap allocations during generated calls";

@@ -1,4 +1,5 @@
-# Script mode: install BUILD_DIR into PREFIX, configure/build/run CONSUMER_SRC against it.
+# Script mode: install BUILD_DIR into PREFIX, configure/build/run CONSUMER_SRC against it, with the
+# installed robots/pendulum.urdf (PREFIX/DATADIR/rbdgen/robots) as the consumer's robot.
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
@@ -9,7 +10,11 @@ endfunction()
 
 file(REMOVE_RECURSE ${PREFIX} ${CONSUMER_BUILD})
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX})
+set(urdf ${PREFIX}/${DATADIR}/rbdgen/robots/pendulum.urdf)
+if(NOT EXISTS ${urdf})
+  message(FATAL_ERROR "the package does not install ${urdf}")
+endif()
 run(${CMAKE_COMMAND} -S ${CONSUMER_SRC} -B ${CONSUMER_BUILD} -G ${GENERATOR}
-    -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${PREFIX})
+    -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${PREFIX} -DRBDGEN_PENDULUM_URDF=${urdf})
 run(${CMAKE_COMMAND} --build ${CONSUMER_BUILD})
 run(${CONSUMER_BUILD}/consumer)

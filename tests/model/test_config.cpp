@@ -96,7 +96,11 @@ TEST(MultiBody, CastToLongDouble)
     EXPECT_EQ(mbl.joint(i).type(), mb.joint(i).type());
     EXPECT_EQ(mbl.joint(i).forward(), mb.joint(i).forward());
     EXPECT_EQ(mbl.body(i).inertia().matrix().cast<double>(), mb.body(i).inertia().matrix());
-    EXPECT_EQ(Eigen::Matrix3d(mbl.transform(i).rotation().cast<double>()), mb.transform(i).rotation());
+    // The cast re-orthonormalises rotations in long double: equal to the double ones within 1e-15,
+    // and orthonormal to long double precision.
+    EXPECT_LE((mbl.transform(i).rotation().cast<double>() - mb.transform(i).rotation()).cwiseAbs().maxCoeff(), 1e-15);
+    const auto & El = mbl.transform(i).rotation();
+    EXPECT_LE(static_cast<double>((El * El.transpose() - sva::Matrix3<long double>::Identity()).cwiseAbs().maxCoeff()), 1e-18);
     EXPECT_EQ(Eigen::Vector3d(mbl.transform(i).translation().cast<double>()), mb.transform(i).translation());
   }
   const rbd::MultiBody back = mbl.cast<double>();

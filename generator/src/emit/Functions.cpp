@@ -326,4 +326,225 @@ EmittedBody centerOfMassBody(const RobotModel & rm)
   return finish(b);
 }
 
+namespace
+{
+
+// Forward pass on a set of joints (ascending, closed under parents): v = X v_p + S alpha and, when
+// asked, a = X a_p + S alphaD + v x S alpha (no gravity). Joints outside the set read as zero.
+void emitMotionPass(Block & b, const RobotModel & rm, const std::vector<JointKernel> & K, const std::vector<int> & set,
+                    bool acceleration, bool withAlphaD, std::vector<Motion> & v, std::vector<Motion> & a)
+{
+  v.assign(rm.joints.size(), Motion::zero());
+  a.assign(rm.joints.size(), Motion::zero());
+  for(int k : set)
+  {
+    const auto kk = static_cast<std::size_t>(k);
+    const MovingJoint & mj = rm.joints[kk];
+    const std::string t = mj.tag;
+    const Motion vJ = jointMotion(b, K[kk], "alpha", mj.vIndex, t + "_vJ");
+    const Motion vp = mj.parent < 0 ? Motion::zero() : v[static_cast<std::size_t>(mj.parent)];
+    v[kk] = add(b, toChild(b, mj, K[kk], vp, t + "_Xv"), vJ, t + "_v");
+    if(!acceleration) continue;
+    const Motion aJ = withAlphaD ? jointMotion(b, K[kk], "alphaD", mj.vIndex, t + "_aJ") : Motion::zero();
+    const Motion ap = mj.parent < 0 ? Motion::zero() : a[static_cast<std::size_t>(mj.parent)];
+    a[kk] = add(b, add(b, toChild(b, mj, K[kk], ap, t + "_Xa"), aJ, t + "_aa"), cross(b, v[kk], vJ, t + "_vxvJ"), t + "_a");
+  }
+}
+
+std::vector<int> allJoints(const RobotModel & rm)
+{
+  std::vector<int> all;
+  for(std::size_t k = 0; k < rm.joints.size(); ++k) all.push_back(static_cast<int>(k));
+  return all;
+}
+
+void writeMotion(Block & b, const std::string & dst, const Motion & m)
+{
+  for(int i = 0; i < 3; ++i)
+  {
+    b.line(fmt::format("{}[{}] = {};", dst, i, Block::text(m.w[i])));
+    b.line(fmt::format("{}[{}] = {};", dst, i + 3, Block::text(m.v[i])));
+  }
+}
+
+EmittedBody linkMotions(const RobotModel & rm, bool acceleration)
+{
+  Block b;
+  const auto K = emitKernels(b, rm, "q");
+  std::vector<Motion> v, a;
+  emitMotionPass(b, rm, K, allJoints(rm), acceleration, true, v, a);
+  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
+  {
+    const BodyFrame & bf = rm.bodies[i];
+    b.comment(fmt::format("link '{}'", bf.name));
+    if(bf.owner < 0)
+    {
+      b.line(fmt::format("res[{}].setZero();", i));
+      continue;
+    }
+    const Motion & m = acceleration ? a[static_cast<std::size_t>(bf.owner)] : v[static_cast<std::size_t>(bf.owner)];
+    writeMotion(b, fmt::format("res[{}]", i), apply(b, constantXform(bf.X_owner_link), m, fmt::format("L{}", i)));
+  }
+  return finish(b);
+}
+
+} // namespace
+
+EmittedBody bodyVelocitiesBody(const RobotModel & rm)
+{
+  return linkMotions(rm, false);
+}
+
+EmittedBody bodyAccelerationsBody(const RobotModel & rm)
+{
+  return linkMotions(rm, true);
+}
+
+EmittedBody jacobianDotTimesAlphaBody(const RobotModel & rm)
+{
+  Block b;
+  b.line("switch(body)");
+  b.line("{");
+  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
+  {
+    const BodyFrame & bf = rm.bodies[i];
+    b.line(fmt::format("case Body::{}:", bf.ident));
+    b.line("{");
+    if(bf.owner >= 0)
+    {
+      b.comment(fmt::format("link '{}': acceleration of its origin at alphaD = 0, world axes", bf.name));
+      const std::vector<int> path = rm.path(bf.owner);
+      std::vector<JointKernel> K(rm.joints.size());
+      for(int k : path) K[static_cast<std::size_t>(k)] = emitJointKernel(b, rm.joints[static_cast<std::size_t>(k)], "q");
+      std::vector<Motion> v, a;
+      emitMotionPass(b, rm, K, path, true, false, v, a);
+      // World pose of the owner along the path, then the link's constant offset.
+      Xform X0 = Xform::identity();
+      bool first = true;
+      for(int k : path)
+      {
+        const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
+        const Xform Xt = constantXform(mj.Xt);
+        const Xform X_0_jt = first ? Xt : compose(b, Xt, X0, mj.tag + "_X0t");
+        X0 = compose(b, K[static_cast<std::size_t>(k)].Xj, X_0_jt, mj.tag + "_X0");
+        first = false;
+      }
+      const Xform C = constantXform(bf.X_owner_link);
+      const std::string h = fmt::format("L{}", i);
+      const Motion vl = apply(b, C, v[static_cast<std::size_t>(bf.owner)], h + "_v");
+      const Motion al = apply(b, C, a[static_cast<std::size_t>(bf.owner)], h + "_a");
+      const Xform X0l = compose(b, C, X0, h + "_X0");
+      // classical acceleration of the origin: R (a_v + w x v); angular: R a_w (R = E_0_link^T)
+      const Vec3 lin = add(b, al.v, cross(b, vl.w, vl.v, h + "_wxv"), h + "_acc");
+      writeMotion(b, "res", {tmul(b, X0l.E, al.w, h + "_Rw"), tmul(b, X0l.E, lin, h + "_Rv")});
+    }
+    else
+      b.line("res.setZero();");
+    b.line("break;");
+    b.line("}");
+  }
+  b.line("}");
+  return finish(b);
+}
+
+EmittedBody comJacobianBody(const RobotModel & rm)
+{
+  Block b;
+  const std::size_t n = rm.joints.size();
+  // Subtree mass and first moment (world): M_j, h_j = sum over the subtree of m_k o_k + E_0_k^T h_k.
+  std::vector<double> mass(n, 0.0);
+  std::vector<Vec3> moment(n, Vec3::zero());
+  for(std::size_t k = n; k-- > 0;)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    const Xform X0 = kinFrame(static_cast<int>(k));
+    if(mj.inertia.mass() != 0.0)
+    {
+      const Vec3 own = add(b, tmul(b, X0.E, Vec3::constant(mj.inertia.momentum()), mj.tag + "_h"),
+                           scale(b, Scalar::constant(mj.inertia.mass()), X0.r, mj.tag + "_mo"), mj.tag + "_mc");
+      moment[k] = add(b, moment[k], own, mj.tag + "_hs");
+    }
+    mass[k] += mj.inertia.mass();
+    if(mj.parent >= 0)
+    {
+      const auto p = static_cast<std::size_t>(mj.parent);
+      mass[p] += mass[k];
+      moment[p] = add(b, moment[p], moment[k], rm.joints[p].tag + "_hs");
+    }
+  }
+  // Column of dof d of joint j: (w x (h_j - M_j o_j) + M_j R s_v) / M, with w = R s_w.
+  const double invM = rm.totalMass > 0 ? 1.0 / rm.totalMass : 0.0;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    const JointKernel K = emitJointKernel(b, mj, "kin.q");
+    const Xform X0 = kinFrame(static_cast<int>(k));
+    const Vec3 rel = sub(b, moment[k], scale(b, Scalar::constant(mass[k]), X0.r, mj.tag + "_Mo"), mj.tag + "_rel");
+    for(int d = 0; d < mj.nv; ++d)
+    {
+      const Motion & Sd = K.S[static_cast<std::size_t>(d)];
+      const std::string h = fmt::format("{}_c{}", mj.tag, d);
+      const Vec3 w = tmul(b, X0.E, Sd.w, h + "_w");
+      const Vec3 col = add(b, cross(b, w, rel, h + "_wxh"), scale(b, Scalar::constant(mass[k]), tmul(b, X0.E, Sd.v, h + "_Rv"), h + "_Mv"), h);
+      for(int r = 0; r < 3; ++r)
+      {
+        const Scalar x = b.sum({Term{invM, {col[r]}}}, fmt::format("{}_{}", h, r));
+        if(!x.isZero()) b.line(fmt::format("J({}, {}) = {};", r, mj.vIndex + d, Block::text(x)));
+      }
+    }
+  }
+  return finish(b);
+}
+
+EmittedBody centroidalMomentumMatrixBody(const RobotModel & rm)
+{
+  Block b;
+  const auto K = emitKernels(b, rm, "q");
+  const auto X0 = emitWorldPoses(b, rm, K);
+  const std::size_t n = rm.joints.size();
+  // Composite inertias (body coordinates), as in CRBA.
+  std::vector<Inertia> Ic(n);
+  for(std::size_t k = 0; k < n; ++k)
+    Ic[k] = constantInertia(rm.joints[k].inertia.mass(), rm.joints[k].inertia.momentum(), rm.joints[k].inertia.inertia());
+  for(std::size_t k = n; k-- > 0;)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    if(mj.parent < 0) continue;
+    const Inertia Ij = transApply(b, K[k].Xj, Ic[k], mj.tag + "_Icj");
+    const auto p = static_cast<std::size_t>(mj.parent);
+    Ic[p] = add(b, Ic[p], transApply(b, constantXform(mj.Xt), Ij, mj.tag + "_Icp"), rm.joints[p].tag + "_Ic");
+  }
+  // CoM (world): sum of m o + E^T h over moving bodies, plus the static part.
+  Vec3 sum = Vec3::constant(rm.staticMoment);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    if(mj.inertia.mass() == 0.0) continue;
+    sum = add(b, sum, add(b, tmul(b, X0[k].E, Vec3::constant(mj.inertia.momentum()), mj.tag + "_h"),
+                          scale(b, Scalar::constant(mj.inertia.mass()), X0[k].r, mj.tag + "_mo"), mj.tag + "_mc"),
+              mj.tag + "_sum");
+  }
+  const double invM = rm.totalMass > 0 ? 1.0 / rm.totalMass : 0.0;
+  const Vec3 com = scale(b, Scalar::constant(invM), sum, "com");
+  // Column: momentum of the subtree moving with S: X_0_j^T (Ic_j S) in world at the origin, then
+  // about the CoM: n_G = n_O - com x f.
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    for(int d = 0; d < mj.nv; ++d)
+    {
+      const std::string h = fmt::format("{}_A{}", mj.tag, d);
+      const Force F = apply(b, Ic[k], K[k].S[static_cast<std::size_t>(d)], h + "_F");
+      const Force Fw = transApply(b, X0[k], F, h + "_Fw");
+      const Vec3 nG = sub(b, Fw.n, cross(b, com, Fw.f, h + "_cxf"), h + "_nG");
+      for(int r = 0; r < 3; ++r)
+      {
+        if(!nG[r].isZero()) b.line(fmt::format("A({}, {}) = {};", r, mj.vIndex + d, Block::text(nG[r])));
+        if(!Fw.f[r].isZero()) b.line(fmt::format("A({}, {}) = {};", r + 3, mj.vIndex + d, Block::text(Fw.f[r])));
+      }
+    }
+  }
+  return finish(b);
+}
+
 } // namespace rbdgen::emit

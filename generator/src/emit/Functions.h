@@ -47,4 +47,15 @@ EmittedBody jacobianBody(const RobotModel & rm);
 /// Reads `kin`; returns the centre of mass in world coordinates in `com`.
 EmittedBody centerOfMassBody(const RobotModel & rm);
 
+/// Reads q, alpha; fills `res[b]` (link velocities, link coordinates).
+EmittedBody bodyVelocitiesBody(const RobotModel & rm);
+/// Reads q, alpha, alphaD; fills `res[b]` (link accelerations without gravity, link coordinates).
+EmittedBody bodyAccelerationsBody(const RobotModel & rm);
+/// Reads `body`, q, alpha; fills `res` (Jdot alpha at the link origin, world axes).
+EmittedBody jacobianDotTimesAlphaBody(const RobotModel & rm);
+/// Reads `kin`; fills `J` (3 x nv CoM Jacobian).
+EmittedBody comJacobianBody(const RobotModel & rm);
+/// Reads q; fills `A` (6 x nv centroidal momentum matrix, [angular about the CoM; linear]).
+EmittedBody centroidalMomentumMatrixBody(const RobotModel & rm);
+
 } // namespace rbdgen::emit

@@ -22,6 +22,17 @@ std::string sanitizeIdentifier(const std::string & name)
   if(out.empty() || std::isdigit(static_cast<unsigned char>(out[0]))) out = "_" + out;
   if(out[0] == '_' && out.size() > 1 && std::isupper(static_cast<unsigned char>(out[1]))) out = "x" + out; // _X reserved
   while(out.size() > 1 && out.back() == '_') out.pop_back();
+  static const std::set<std::string> keywords{
+      "alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand", "bitor", "bool", "break", "case", "catch", "char",
+      "char16_t", "char32_t", "char8_t", "class", "compl", "concept", "const", "consteval", "constexpr", "constinit",
+      "const_cast", "continue", "co_await", "co_return", "co_yield", "decltype", "default", "delete", "do", "double",
+      "dynamic_cast", "else", "enum", "explicit", "export", "extern", "false", "float", "for", "friend", "goto", "if",
+      "inline", "int", "long", "mutable", "namespace", "new", "noexcept", "not", "not_eq", "nullptr", "operator", "or",
+      "or_eq", "private", "protected", "public", "register", "reinterpret_cast", "requires", "return", "short",
+      "signed", "sizeof", "static", "static_assert", "static_cast", "struct", "switch", "template", "this",
+      "thread_local", "throw", "true", "try", "typedef", "typeid", "typename", "union", "unsigned", "using",
+      "virtual", "void", "volatile", "wchar_t", "while", "xor", "xor_eq"};
+  if(keywords.count(out)) out += "_";
   return out;
 }
 

@@ -199,8 +199,8 @@ void sEulerIntegration(const MultiBodyTpl<T> & mb, MultiBodyConfigTpl<T> & mbc,
                        typename MultiBodyConfigTpl<T>::Scalar step);
 
 extern template std::vector<std::vector<double>> integrateConfiguration(const MultiBodyTpl<double> &,
-                                                                      std::vector<std::vector<double>>,
-                                                                      const std::vector<std::vector<double>> &);
+                                                                        std::vector<std::vector<double>>,
+                                                                        const std::vector<std::vector<double>> &);
 extern template std::vector<std::vector<long double>> integrateConfiguration(
     const MultiBodyTpl<long double> &, std::vector<std::vector<long double>>,
     const std::vector<std::vector<long double>> &);

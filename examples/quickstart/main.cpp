@@ -1,0 +1,208 @@
+// Quick start: the dynamics generated for one URDF (robot/dynamics.hpp, made at build time by
+// generate_robot_dynamics) against the generic runtime loaded from the same URDF.
+//  1. accuracy: for 1000 seeded random states, the largest relative error of the generated forward
+//     kinematics, inverse dynamics, mass matrix and forward dynamics w.r.t. the runtime;
+//  2. speed: time per call of inverse and forward dynamics, runtime vs generated (median of several
+//     runs, each over a pool of pre-generated inputs, one different input per call).
+// Exit status 1 if an error exceeds kTolerance (forward dynamics: kTolerance + cond(H) eps).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include <robot/dynamics.hpp>
+
+#include <Eigen/Eigenvalues>
+#include <rbd/FD.h>
+#include <rbd/FK.h>
+#include <rbd/FV.h>
+#include <rbd/ID.h>
+#include <rbd/parsers/urdf.h>
+
+namespace
+{
+
+constexpr int kStates = 1000;      // random states for the accuracy check, and the timing pool
+constexpr int kRuns = 9;           // timing: median of kRuns runs over the whole pool
+constexpr double kTolerance = 1e-9;
+
+using VectorX = Eigen::VectorXd;
+
+/// Keep `p` and what it points to alive: the compiler must assume the asm reads it.
+template<class T>
+inline void keep(const T & value)
+{
+  asm volatile("" : : "g"(&value) : "memory");
+}
+
+/// Relative error ||a - b||_inf / ||b||_inf (absolute when b = 0).
+template<class A, class B>
+double relErr(const Eigen::MatrixBase<A> & a, const Eigen::MatrixBase<B> & b)
+{
+  const double scale = b.template lpNorm<Eigen::Infinity>();
+  const double diff = (a - b).template lpNorm<Eigen::Infinity>();
+  return scale > 0 ? diff / scale : diff;
+}
+
+struct State
+{
+  VectorX q, alpha, alphaD, tau;
+};
+
+/// Uniform joint values in [-3, 3] (unit quaternions for spherical and free joints), velocities,
+/// accelerations and torques in [-2, 2].
+State randomState(std::mt19937 & rng, const rbd::MultiBody & mb)
+{
+  std::uniform_real_distribution<double> u(-1, 1);
+  State s{VectorX(mb.nrParams()), VectorX(mb.nrDof()), VectorX(mb.nrDof()), VectorX(mb.nrDof())};
+  for(int i = 0; i < mb.nrJoints(); ++i)
+  {
+    const auto & j = mb.joint(i);
+    const int p = mb.jointPosInParam(i);
+    for(int k = 0; k < j.params(); ++k) s.q(p + k) = 3 * u(rng);
+    if(j.type() == rbd::Joint::Spherical || j.type() == rbd::Joint::Free)
+    {
+      Eigen::Vector4d quat(u(rng), u(rng), u(rng), u(rng));
+      s.q.segment<4>(p) = quat.normalized();
+    }
+  }
+  for(int k = 0; k < mb.nrDof(); ++k)
+  {
+    s.alpha(k) = 2 * u(rng);
+    s.alphaD(k) = 2 * u(rng);
+    s.tau(k) = 2 * u(rng);
+  }
+  return s;
+}
+
+/// The runtime's path from flat vectors: q, alpha (+ alphaD or tau) -> mbc -> FK, FV.
+void setState(const rbd::MultiBody & mb, rbd::MultiBodyConfig & mbc, const State & s)
+{
+  rbd::vectorToParam<double>(s.q, mbc.q);
+  rbd::vectorToDof<double>(s.alpha, mbc.alpha);
+  rbd::vectorToDof<double>(s.alphaD, mbc.alphaD);
+  rbd::vectorToDof<double>(s.tau, mbc.jointTorque);
+  rbd::forwardKinematics(mb, mbc);
+  rbd::forwardVelocity(mb, mbc);
+}
+
+/// Median over kRuns of the time per call of f(state) over the pool, in ns.
+template<class F>
+double nsPerCall(const std::vector<State> & pool, F && f)
+{
+  std::vector<double> runs;
+  for(int r = 0; r < kRuns; ++r)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    for(const State & s : pool) f(s);
+    const auto t1 = std::chrono::steady_clock::now();
+    runs.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() / static_cast<double>(pool.size()));
+  }
+  std::nth_element(runs.begin(), runs.begin() + kRuns / 2, runs.end());
+  return runs[kRuns / 2];
+}
+
+} // namespace
+
+int main()
+{
+  rbd::parsers::ParserOptions opt;
+  opt.fixed = !RBDGEN_QUICKSTART_FLOATING_BASE;
+  const rbd::parsers::ParserResult urdf = rbd::parsers::fromUrdfFile(RBDGEN_QUICKSTART_URDF_PATH, opt);
+  const rbd::MultiBody & mb = urdf.mb;
+  std::printf("robot '%s' from %s (%s base): nq = %d, nv = %d, %d bodies\n", urdf.name.c_str(),
+              RBDGEN_QUICKSTART_URDF_PATH, RBDGEN_QUICKSTART_FLOATING_BASE ? "floating" : "fixed", robot::nq, robot::nv,
+              robot::nbodies);
+  if(mb.nrParams() != robot::nq || mb.nrDof() != robot::nv || mb.nrBodies() != robot::nbodies)
+  {
+    std::printf("error: the generated header does not match the URDF (nq %d, nv %d, bodies %d)\n", mb.nrParams(),
+                mb.nrDof(), mb.nrBodies());
+    return 1;
+  }
+  // MultiBody body frame -> URDF link frame (identity unless the base is not the URDF root).
+  std::vector<sva::PTransformd> X_mb_link;
+  for(const auto & b : mb.bodies())
+  {
+    const auto it = urdf.bodyBaseTransforms.find(b.name());
+    X_mb_link.push_back(it == urdf.bodyBaseTransforms.end() ? sva::PTransformd::Identity() : it->second.inv());
+  }
+
+  std::mt19937 rng(2024);
+  std::vector<State> pool;
+  for(int s = 0; s < kStates; ++s) pool.push_back(randomState(rng, mb));
+
+  // --- 1. accuracy --------------------------------------------------------------------------
+  rbd::MultiBodyConfig mbc(mb);
+  rbd::InverseDynamics id(mb);
+  rbd::ForwardDynamics fd(mb);
+  double errFK = 0, errID = 0, errH = 0, errFD = 0, worstCondH = 0;
+  bool fdWithinBound = true;
+  const double eps = std::numeric_limits<double>::epsilon();
+  for(const State & s : pool)
+  {
+    const robot::Config<double> q = s.q;
+    const robot::Tangent<double> alpha = s.alpha, alphaD = s.alphaD, tau = s.tau;
+    setState(mb, mbc, s);
+    // Forward kinematics: world pose of every link.
+    const auto poses = robot::forward_kinematics<double>(q);
+    for(int i = 0; i < mb.nrBodies(); ++i)
+    {
+      const auto k = static_cast<std::size_t>(i);
+      const sva::PTransformd X_0_link = X_mb_link[k] * mbc.bodyPosW[k];
+      errFK = std::max({errFK, relErr(poses[k].rotation, X_0_link.rotation()),
+                        relErr(poses[k].translation, X_0_link.translation())});
+    }
+    // Inverse dynamics: tau = ID(q, alpha, alphaD).
+    id.inverseDynamics(mb, mbc);
+    errID = std::max(errID, relErr(robot::inverse_dynamics<double>(q, alpha, alphaD), rbd::dofToVector(mb, mbc.jointTorque)));
+    // Mass matrix and forward dynamics: alphaD = H^-1 (tau - C).
+    rbd::vectorToDof<double>(s.tau, mbc.jointTorque);
+    fd.forwardDynamics(mb, mbc);
+    errH = std::max(errH, relErr(robot::mass_matrix<double>(q), fd.H()));
+    // An ill-conditioned H amplifies rounding: both solves are only good to about cond(H) eps.
+    const double eFD = relErr(robot::forward_dynamics<double>(q, alpha, tau), rbd::dofToVector(mb, mbc.alphaD));
+    const Eigen::VectorXd lambda = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(fd.H(), Eigen::EigenvaluesOnly).eigenvalues();
+    const double condH = lambda.minCoeff() > 0 ? lambda.maxCoeff() / lambda.minCoeff() : HUGE_VAL; // singular H
+    errFD = std::max(errFD, eFD);
+    worstCondH = std::max(worstCondH, condH);
+    fdWithinBound = fdWithinBound && eFD <= kTolerance + condH * eps;
+  }
+  std::printf("\naccuracy over %d random states: max relative error ||generated - runtime||inf / ||runtime||inf\n",
+              kStates);
+  const bool okFK = errFK <= kTolerance, okID = errID <= kTolerance, okH = errH <= kTolerance;
+  std::printf("  %-20s %9.2e  %s\n", "forward kinematics", errFK, okFK ? "ok" : "MISMATCH");
+  std::printf("  %-20s %9.2e  %s\n", "inverse dynamics", errID, okID ? "ok" : "MISMATCH");
+  std::printf("  %-20s %9.2e  %s\n", "mass matrix", errH, okH ? "ok" : "MISMATCH");
+  std::printf("  %-20s %9.2e  %s (largest cond(H) %.1e; bound per state: %.0e + cond(H) eps)\n", "forward dynamics",
+              errFD, fdWithinBound ? "ok" : "MISMATCH", worstCondH, kTolerance);
+  const bool ok = okFK && okID && okH && fdWithinBound;
+
+  // --- 2. speed -----------------------------------------------------------------------------
+  const double rtID = nsPerCall(pool, [&](const State & s) {
+    setState(mb, mbc, s);
+    id.inverseDynamics(mb, mbc);
+    keep(mbc.jointTorque[0]);
+  });
+  const double genID = nsPerCall(pool, [&](const State & s) {
+    const robot::Tangent<double> t = robot::inverse_dynamics<double>(robot::Config<double>(s.q), s.alpha, s.alphaD);
+    keep(t);
+  });
+  const double rtFD = nsPerCall(pool, [&](const State & s) {
+    setState(mb, mbc, s);
+    fd.forwardDynamics(mb, mbc);
+    keep(mbc.alphaD[0]);
+  });
+  const double genFD = nsPerCall(pool, [&](const State & s) {
+    const robot::Tangent<double> a = robot::forward_dynamics<double>(robot::Config<double>(s.q), s.alpha, s.tau);
+    keep(a);
+  });
+  std::printf("\ntime per call, ns (median of %d runs over %d different inputs; runtime = set mbc + FK + FV + algorithm)\n",
+              kRuns, kStates);
+  std::printf("  %-20s %10s %10s %9s\n", "", "runtime", "generated", "speed-up");
+  std::printf("  %-20s %10.0f %10.0f %8.1fx\n", "inverse dynamics", rtID, genID, rtID / genID);
+  std::printf("  %-20s %10.0f %10.0f %8.1fx\n", "forward dynamics", rtFD, genFD, rtFD / genFD);
+  return ok ? 0 : 1;
+}

@@ -78,7 +78,18 @@ RobotModel robotModelFromUrdf(const rbd::parsers::ParserResult & robot)
 std::string emitHeader(const RobotModel & rm, const std::string & ns, const std::string & sourceName,
                        const std::string & sourceHash, const std::string & options)
 {
-  const std::string fdAlgorithm = "CRBA mass matrix + RNEA bias + tree-sparse LTDL factorisation";
+  // Forward dynamics: both algorithms are emitted; forward_dynamics() calls the one with fewer
+  // floating-point operations (CRBA's count includes the nonlinear_effects() it calls).
+  const emit::EmittedBody crba = emit::forwardDynamicsBody(rm);
+  const emit::EmittedBody aba = emit::abaBody(rm);
+  const emit::EmittedBody nle = emit::rneaBody(rm, {true, false, true, false});
+  auto flops = [](const emit::OpCount & c) { return c.mults + c.adds + 20 * c.calls; };
+  const long crbaCost = flops(crba.ops) + flops(nle.ops), abaCost = flops(aba.ops);
+  const bool useAba = abaCost < crbaCost;
+  const std::string fdAlgorithm =
+      fmt::format("{} (emitted operations, sin/cos and divisions counted as 20: ABA {}, CRBA + LTDL {})",
+                  useAba ? "articulated-body algorithm" : "CRBA mass matrix + RNEA bias + tree-sparse LTDL factorisation",
+                  abaCost, crbaCost);
   std::map<std::string, std::string> v;
   v["provenance"] = provenance(rm, sourceName, sourceHash, options, fdAlgorithm);
   v["namespace"] = ns;
@@ -101,11 +112,13 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   v["fn_kinematics"] = emit::kinematicsBody(rm).text;
   v["fn_inverse_dynamics"] = emit::rneaBody(rm, {true, true, true, false}).text;
   v["fn_inverse_dynamics_fext"] = emit::rneaBody(rm, {true, true, true, true}).text;
-  v["fn_nonlinear_effects"] = emit::rneaBody(rm, {true, false, true, false}).text;
+  v["fn_nonlinear_effects"] = nle.text;
   v["fn_velocity_torques"] = emit::rneaBody(rm, {true, false, false, false}).text;
   v["fn_gravity_torques"] = emit::rneaBody(rm, {false, false, true, false}).text;
   v["fn_mass_matrix"] = emit::massMatrixBody(rm).text;
-  v["fn_forward_dynamics"] = emit::forwardDynamicsBody(rm).text;
+  v["fn_forward_dynamics_crba"] = crba.text;
+  v["fn_forward_dynamics_aba"] = aba.text;
+  v["forward_dynamics_choice"] = useAba ? "forward_dynamics_aba" : "forward_dynamics_crba";
   v["fn_jacobian"] = emit::jacobianBody(rm).text;
   v["fn_center_of_mass"] = emit::centerOfMassBody(rm).text;
   v["fn_body_velocities"] = emit::bodyVelocitiesBody(rm).text;

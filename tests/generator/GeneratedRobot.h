@@ -20,6 +20,8 @@ struct GeneratedFunctions
   void (*gravityTorques)(const S * q, S * tau);
   void (*massMatrix)(const S * q, S * H);                  ///< nv x nv
   void (*forwardDynamics)(const S * q, const S * alpha, const S * tau, S * alphaD);
+  void (*forwardDynamicsAba)(const S * q, const S * alpha, const S * tau, S * alphaD);
+  void (*forwardDynamicsCrba)(const S * q, const S * alpha, const S * tau, S * alphaD);
   void (*jacobian)(int body, const S * q, S * J);          ///< via kinematics(): 6 x nv
   void (*jacobianQ)(int body, const S * q, S * J);         ///< jacobian(body, q)
   void (*centerOfMass)(const S * q, S * com);              ///< 3

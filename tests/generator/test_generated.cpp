@@ -216,7 +216,8 @@ TEST_P(Generated, MassMatrixAndForwardDynamics)
   Reference ref(g());
   rbdtest::Rng rng(3);
   rbd::ForwardDynamics fdr(ref.mb());
-  ErrorLog hLog{"mass_matrix"}, fdLog{"forward_dynamics"};
+  ErrorLog hLog{"mass_matrix"}, fdLog{"forward_dynamics"}, abaLog{"forward_dynamics_aba"}, crbaLog{"forward_dynamics_crba"};
+  std::printf("[ %-24s ] %s\n", "forward_dynamics", g().forwardDynamicsAlgorithm);
   const int nv = g().nv;
   Eigen::MatrixXd H(nv, nv);
   Eigen::MatrixXf HF(nv, nv);
@@ -245,13 +246,23 @@ TEST_P(Generated, MassMatrixAndForwardDynamics)
     rbd::MultiBodyConfig c = ref.mbc;
     fdr.forwardDynamics(ref.mb(), c);
     const Eigen::VectorXd adRef = rbd::dofToVector(ref.mb(), c.alphaD);
-    g().d.forwardDynamics(q.data(), a.data(), tau.data(), ad.data());
-    g().f.forwardDynamics(qf.data(), af.data(), tauf.data(), adF.data());
-    const double ed = err(ad, adRef), ef = err(adF, adRef);
-    // Two backward-stable solvers differ by ~cond(H) eps: the bound grows with the conditioning.
-    EXPECT_LE(ed, kTolDouble * std::max(1.0, cond * 1e-3)) << "cond(H) = " << cond;
-    EXPECT_LE(ef, kTolFloatDynamics * std::max(1.0, cond * 1e-3)) << "cond(H) = " << cond;
-    fdLog.add(ed, ef);
+    // forward_dynamics (the chosen algorithm), then each algorithm on its own.
+    using Fd = void (*)(const double *, const double *, const double *, double *);
+    using FdF = void (*)(const float *, const float *, const float *, float *);
+    const std::pair<Fd, FdF> variants[] = {{g().d.forwardDynamics, g().f.forwardDynamics},
+                                           {g().d.forwardDynamicsAba, g().f.forwardDynamicsAba},
+                                           {g().d.forwardDynamicsCrba, g().f.forwardDynamicsCrba}};
+    ErrorLog * logs[] = {&fdLog, &abaLog, &crbaLog};
+    for(int vi = 0; vi < 3; ++vi)
+    {
+      variants[vi].first(q.data(), a.data(), tau.data(), ad.data());
+      variants[vi].second(qf.data(), af.data(), tauf.data(), adF.data());
+      const double ed = err(ad, adRef), ef = err(adF, adRef);
+      // Two backward-stable solvers differ by ~cond(H) eps: the bound grows with the conditioning.
+      EXPECT_LE(ed, kTolDouble * std::max(1.0, cond * 1e-3)) << logs[vi]->what << ", cond(H) = " << cond;
+      EXPECT_LE(ef, kTolFloatDynamics * std::max(1.0, cond * 1e-3)) << logs[vi]->what << ", cond(H) = " << cond;
+      logs[vi]->add(ed, ef);
+    }
   }
   std::printf("[ %-24s ] worst cond(H) %.3g%s\n", "forward_dynamics", worstCond,
               singular ? " (singular mass matrix met: forward dynamics skipped there)" : "");

@@ -6,15 +6,15 @@
 
 namespace rbdgen::emit
 {
-namespace
-{
-
-const std::string kIndent = "  ";
 
 EmittedBody finish(const Block & b)
 {
-  return {b.str(kIndent), OpCount{b.mults(), b.adds(), b.calls()}};
+  return {b.str("  "), OpCount{b.mults(), b.adds(), b.calls()}};
 }
+
+namespace
+{
+
 
 // Write a symbolic pose into `<dst>.rotation` / `<dst>.translation`.
 void writePose(Block & b, const std::string & dst, const Xform & X)
@@ -45,6 +45,63 @@ Xform kinFrame(int k)
     for(int c = 0; c < 3; ++c) X.E(r, c) = Scalar::var(fmt::format("kin.frame[{}].rotation({}, {})", k, r, c));
   for(int i = 0; i < 3; ++i) X.r[i] = Scalar::var(fmt::format("kin.frame[{}].translation({})", k, i));
   return X;
+}
+
+// switch(body) { case Body::<link>: { ... break; } ... }: caseBody emits the case of a link that
+// moves; a static link gets `staticLine` (if any).
+template<typename F>
+void emitBodySwitch(Block & b, const RobotModel & rm, const std::string & staticLine, F && caseBody)
+{
+  b.line("switch(body)");
+  b.line("{");
+  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
+  {
+    const BodyFrame & bf = rm.bodies[i];
+    b.line(fmt::format("case Body::{}:", bf.ident));
+    b.line("{");
+    if(bf.owner >= 0) caseBody(i, bf);
+    else if(!staticLine.empty()) b.line(staticLine);
+    b.line("break;");
+    b.line("}");
+  }
+  b.line("}");
+}
+
+// Composite inertias Ic_k (body coordinates): Ic_p += X_p_k^T Ic_k X_p_k, leaves to root.
+std::vector<Inertia> emitCompositeInertias(Block & b, const RobotModel & rm, const std::vector<JointKernel> & K)
+{
+  const std::size_t n = rm.joints.size();
+  std::vector<Inertia> Ic(n);
+  for(std::size_t k = 0; k < n; ++k)
+    Ic[k] = constantInertia(rm.joints[k].inertia.mass(), rm.joints[k].inertia.momentum(), rm.joints[k].inertia.inertia());
+  for(std::size_t k = n; k-- > 0;)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    if(mj.parent < 0) continue;
+    b.comment(fmt::format("{}: composite inertia into its parent", mj.tag));
+    const Inertia Ij = transApply(b, K[k].Xj, Ic[k], mj.tag + "_Icj");
+    const Inertia Ip = transApply(b, constantXform(mj.Xt), Ij, mj.tag + "_Icp");
+    const auto p = static_cast<std::size_t>(mj.parent);
+    Ic[p] = add(b, Ic[p], Ip, rm.joints[p].tag + "_Ic");
+  }
+  return Ic;
+}
+
+// First moment m c (world) of moving joint k's body: m_k o_k + E_0_k^T h_k.
+Vec3 emitFirstMoment(Block & b, const MovingJoint & mj, const Xform & X0)
+{
+  return add(b, tmul(b, X0.E, Vec3::constant(mj.inertia.momentum()), mj.tag + "_h"),
+             scale(b, Scalar::constant(mj.inertia.mass()), X0.r, mj.tag + "_mo"), mj.tag + "_mc");
+}
+
+// Sum of the first moments of every body, static ones included.
+Vec3 emitTotalFirstMoment(Block & b, const RobotModel & rm, const std::vector<Xform> & X0)
+{
+  Vec3 sum = Vec3::constant(rm.staticMoment);
+  for(std::size_t k = 0; k < rm.joints.size(); ++k)
+    if(rm.joints[k].inertia.mass() != 0.0)
+      sum = add(b, sum, emitFirstMoment(b, rm.joints[k], X0[k]), rm.joints[k].tag + "_sum");
+  return sum;
 }
 
 } // namespace
@@ -137,20 +194,7 @@ namespace
 std::vector<std::vector<Scalar>> emitCrba(Block & b, const RobotModel & rm, const std::vector<JointKernel> & K)
 {
   const std::size_t n = rm.joints.size();
-  std::vector<Inertia> Ic(n);
-  for(std::size_t k = 0; k < n; ++k)
-    Ic[k] = constantInertia(rm.joints[k].inertia.mass(), rm.joints[k].inertia.momentum(), rm.joints[k].inertia.inertia());
-  // Ic_p += X_p_i^T Ic_i X_p_i, leaves to root.
-  for(std::size_t k = n; k-- > 0;)
-  {
-    const MovingJoint & mj = rm.joints[k];
-    if(mj.parent < 0) continue;
-    b.comment(fmt::format("{}: composite inertia into its parent", mj.tag));
-    const Inertia Ij = transApply(b, K[k].Xj, Ic[k], mj.tag + "_Icj");
-    const Inertia Ip = transApply(b, constantXform(mj.Xt), Ij, mj.tag + "_Icp");
-    const auto p = static_cast<std::size_t>(mj.parent);
-    Ic[p] = add(b, Ic[p], Ip, rm.joints[p].tag + "_Ic");
-  }
+  const std::vector<Inertia> Ic = emitCompositeInertias(b, rm, K);
   std::vector<std::vector<Scalar>> H(static_cast<std::size_t>(rm.nv),
                                      std::vector<Scalar>(static_cast<std::size_t>(rm.nv), Scalar::constant(0)));
   for(std::size_t k = 0; k < n; ++k)
@@ -265,45 +309,33 @@ EmittedBody forwardDynamicsBody(const RobotModel & rm)
 EmittedBody jacobianBody(const RobotModel & rm)
 {
   Block b;
-  b.line("switch(body)");
-  b.line("{");
-  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
-  {
-    const BodyFrame & bf = rm.bodies[i];
-    b.line(fmt::format("case Body::{}:", bf.ident));
-    b.line("{");
-    if(bf.owner >= 0)
+  emitBodySwitch(b, rm, "", [&](std::size_t i, const BodyFrame & bf) {
+    b.comment(fmt::format("link '{}': one column per dof on the path, world axes at the link origin p", bf.name));
+    Vec3 p;
+    for(int c = 0; c < 3; ++c) p[c] = Scalar::var(fmt::format("kin.pose[{}].translation({})", i, c));
+    for(int k : rm.path(bf.owner))
     {
-      b.comment(fmt::format("link '{}': one column per dof on the path, world axes at the link origin p", bf.name));
-      Vec3 p;
-      for(int c = 0; c < 3; ++c) p[c] = Scalar::var(fmt::format("kin.pose[{}].translation({})", i, c));
-      for(int k : rm.path(bf.owner))
+      const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
+      const JointKernel K = emitJointKernel(b, mj, "kin.q"); // S depends on q only for backward multi-dof joints
+      const Xform X0 = kinFrame(k);
+      const std::string h = fmt::format("J{}_{}", i, mj.tag);
+      const Vec3 po = sub(b, p, X0.r, h + "_po");
+      for(int d = 0; d < mj.nv; ++d)
       {
-        const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
-        const JointKernel K = emitJointKernel(b, mj, "kin.q"); // S depends on q only for backward multi-dof joints
-        const Xform X0 = kinFrame(k);
-        const std::string h = fmt::format("J{}_{}", i, mj.tag);
-        const Vec3 po = sub(b, p, X0.r, h + "_po");
-        for(int d = 0; d < mj.nv; ++d)
+        // [R s_w; R s_v + (R s_w) x (p - o_k)], R = E_0_k^T
+        const Motion & Sd = K.S[static_cast<std::size_t>(d)];
+        const Vec3 w = tmul(b, X0.E, Sd.w, fmt::format("{}_w{}", h, d));
+        const Vec3 v = add(b, tmul(b, X0.E, Sd.v, fmt::format("{}_Rv{}", h, d)), cross(b, w, po, fmt::format("{}_wxp{}", h, d)),
+                           fmt::format("{}_v{}", h, d));
+        const int col = mj.vIndex + d;
+        for(int r = 0; r < 3; ++r)
         {
-          // [R s_w; R s_v + (R s_w) x (p - o_k)], R = E_0_k^T
-          const Motion & Sd = K.S[static_cast<std::size_t>(d)];
-          const Vec3 w = tmul(b, X0.E, Sd.w, fmt::format("{}_w{}", h, d));
-          const Vec3 v = add(b, tmul(b, X0.E, Sd.v, fmt::format("{}_Rv{}", h, d)), cross(b, w, po, fmt::format("{}_wxp{}", h, d)),
-                             fmt::format("{}_v{}", h, d));
-          const int col = mj.vIndex + d;
-          for(int r = 0; r < 3; ++r)
-          {
-            if(!w[r].isZero()) b.line(fmt::format("J({}, {}) = {};", r, col, Block::text(w[r])));
-            if(!v[r].isZero()) b.line(fmt::format("J({}, {}) = {};", r + 3, col, Block::text(v[r])));
-          }
+          if(!w[r].isZero()) b.line(fmt::format("J({}, {}) = {};", r, col, Block::text(w[r])));
+          if(!v[r].isZero()) b.line(fmt::format("J({}, {}) = {};", r + 3, col, Block::text(v[r])));
         }
       }
     }
-    b.line("break;");
-    b.line("}");
-  }
-  b.line("}");
+  });
   return finish(b);
 }
 
@@ -311,16 +343,9 @@ EmittedBody centerOfMassBody(const RobotModel & rm)
 {
   Block b;
   b.comment("com = (sum_k m_k o_k + E_0_k^T h_k + static first moment) / M");
-  Vec3 sum = Vec3::constant(rm.staticMoment);
-  for(std::size_t k = 0; k < rm.joints.size(); ++k)
-  {
-    const MovingJoint & mj = rm.joints[k];
-    if(mj.inertia.mass() == 0.0) continue;
-    const Xform X0 = kinFrame(static_cast<int>(k));
-    const Vec3 Eth = tmul(b, X0.E, Vec3::constant(mj.inertia.momentum()), mj.tag + "_h");
-    const Vec3 mo = scale(b, Scalar::constant(mj.inertia.mass()), X0.r, mj.tag + "_mo");
-    sum = add(b, sum, add(b, Eth, mo, mj.tag + "_mc"), mj.tag + "_sum");
-  }
+  std::vector<Xform> X0;
+  for(std::size_t k = 0; k < rm.joints.size(); ++k) X0.push_back(kinFrame(static_cast<int>(k)));
+  const Vec3 sum = emitTotalFirstMoment(b, rm, X0);
   const double invM = rm.totalMass > 0 ? 1.0 / rm.totalMass : 0.0;
   for(int c = 0; c < 3; ++c) b.line(fmt::format("com({}) = {};", c, Block::text(b.sum({Term{invM, {sum[c]}}}, fmt::format("com_{}", c)))));
   return finish(b);
@@ -403,47 +428,33 @@ EmittedBody bodyAccelerationsBody(const RobotModel & rm)
 EmittedBody jacobianDotTimesAlphaBody(const RobotModel & rm)
 {
   Block b;
-  b.line("switch(body)");
-  b.line("{");
-  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
-  {
-    const BodyFrame & bf = rm.bodies[i];
-    b.line(fmt::format("case Body::{}:", bf.ident));
-    b.line("{");
-    if(bf.owner >= 0)
+  emitBodySwitch(b, rm, "res.setZero();", [&](std::size_t i, const BodyFrame & bf) {
+    b.comment(fmt::format("link '{}': acceleration of its origin at alphaD = 0, world axes", bf.name));
+    const std::vector<int> path = rm.path(bf.owner);
+    std::vector<JointKernel> K(rm.joints.size());
+    for(int k : path) K[static_cast<std::size_t>(k)] = emitJointKernel(b, rm.joints[static_cast<std::size_t>(k)], "q");
+    std::vector<Motion> v, a;
+    emitMotionPass(b, rm, K, path, true, false, v, a);
+    // World pose of the owner along the path, then the link's constant offset.
+    Xform X0 = Xform::identity();
+    bool first = true;
+    for(int k : path)
     {
-      b.comment(fmt::format("link '{}': acceleration of its origin at alphaD = 0, world axes", bf.name));
-      const std::vector<int> path = rm.path(bf.owner);
-      std::vector<JointKernel> K(rm.joints.size());
-      for(int k : path) K[static_cast<std::size_t>(k)] = emitJointKernel(b, rm.joints[static_cast<std::size_t>(k)], "q");
-      std::vector<Motion> v, a;
-      emitMotionPass(b, rm, K, path, true, false, v, a);
-      // World pose of the owner along the path, then the link's constant offset.
-      Xform X0 = Xform::identity();
-      bool first = true;
-      for(int k : path)
-      {
-        const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
-        const Xform Xt = constantXform(mj.Xt);
-        const Xform X_0_jt = first ? Xt : compose(b, Xt, X0, mj.tag + "_X0t");
-        X0 = compose(b, K[static_cast<std::size_t>(k)].Xj, X_0_jt, mj.tag + "_X0");
-        first = false;
-      }
-      const Xform C = constantXform(bf.X_owner_link);
-      const std::string h = fmt::format("L{}", i);
-      const Motion vl = apply(b, C, v[static_cast<std::size_t>(bf.owner)], h + "_v");
-      const Motion al = apply(b, C, a[static_cast<std::size_t>(bf.owner)], h + "_a");
-      const Xform X0l = compose(b, C, X0, h + "_X0");
-      // classical acceleration of the origin: R (a_v + w x v); angular: R a_w (R = E_0_link^T)
-      const Vec3 lin = add(b, al.v, cross(b, vl.w, vl.v, h + "_wxv"), h + "_acc");
-      writeMotion(b, "res", {tmul(b, X0l.E, al.w, h + "_Rw"), tmul(b, X0l.E, lin, h + "_Rv")});
+      const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
+      const Xform Xt = constantXform(mj.Xt);
+      const Xform X_0_jt = first ? Xt : compose(b, Xt, X0, mj.tag + "_X0t");
+      X0 = compose(b, K[static_cast<std::size_t>(k)].Xj, X_0_jt, mj.tag + "_X0");
+      first = false;
     }
-    else
-      b.line("res.setZero();");
-    b.line("break;");
-    b.line("}");
-  }
-  b.line("}");
+    const Xform C = constantXform(bf.X_owner_link);
+    const std::string h = fmt::format("L{}", i);
+    const Motion vl = apply(b, C, v[static_cast<std::size_t>(bf.owner)], h + "_v");
+    const Motion al = apply(b, C, a[static_cast<std::size_t>(bf.owner)], h + "_a");
+    const Xform X0l = compose(b, C, X0, h + "_X0");
+    // classical acceleration of the origin: R (a_v + w x v); angular: R a_w (R = E_0_link^T)
+    const Vec3 lin = add(b, al.v, cross(b, vl.w, vl.v, h + "_wxv"), h + "_acc");
+    writeMotion(b, "res", {tmul(b, X0l.E, al.w, h + "_Rw"), tmul(b, X0l.E, lin, h + "_Rv")});
+  });
   return finish(b);
 }
 
@@ -460,9 +471,7 @@ EmittedBody comJacobianBody(const RobotModel & rm)
     const Xform X0 = kinFrame(static_cast<int>(k));
     if(mj.inertia.mass() != 0.0)
     {
-      const Vec3 own = add(b, tmul(b, X0.E, Vec3::constant(mj.inertia.momentum()), mj.tag + "_h"),
-                           scale(b, Scalar::constant(mj.inertia.mass()), X0.r, mj.tag + "_mo"), mj.tag + "_mc");
-      moment[k] = add(b, moment[k], own, mj.tag + "_hs");
+      moment[k] = add(b, moment[k], emitFirstMoment(b, mj, X0), mj.tag + "_hs");
     }
     mass[k] += mj.inertia.mass();
     if(mj.parent >= 0)
@@ -502,28 +511,8 @@ EmittedBody centroidalMomentumMatrixBody(const RobotModel & rm)
   const auto K = emitKernels(b, rm, "q");
   const auto X0 = emitWorldPoses(b, rm, K);
   const std::size_t n = rm.joints.size();
-  // Composite inertias (body coordinates), as in CRBA.
-  std::vector<Inertia> Ic(n);
-  for(std::size_t k = 0; k < n; ++k)
-    Ic[k] = constantInertia(rm.joints[k].inertia.mass(), rm.joints[k].inertia.momentum(), rm.joints[k].inertia.inertia());
-  for(std::size_t k = n; k-- > 0;)
-  {
-    const MovingJoint & mj = rm.joints[k];
-    if(mj.parent < 0) continue;
-    const Inertia Ij = transApply(b, K[k].Xj, Ic[k], mj.tag + "_Icj");
-    const auto p = static_cast<std::size_t>(mj.parent);
-    Ic[p] = add(b, Ic[p], transApply(b, constantXform(mj.Xt), Ij, mj.tag + "_Icp"), rm.joints[p].tag + "_Ic");
-  }
-  // CoM (world): sum of m o + E^T h over moving bodies, plus the static part.
-  Vec3 sum = Vec3::constant(rm.staticMoment);
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    const MovingJoint & mj = rm.joints[k];
-    if(mj.inertia.mass() == 0.0) continue;
-    sum = add(b, sum, add(b, tmul(b, X0[k].E, Vec3::constant(mj.inertia.momentum()), mj.tag + "_h"),
-                          scale(b, Scalar::constant(mj.inertia.mass()), X0[k].r, mj.tag + "_mo"), mj.tag + "_mc"),
-              mj.tag + "_sum");
-  }
+  const std::vector<Inertia> Ic = emitCompositeInertias(b, rm, K);
+  const Vec3 sum = emitTotalFirstMoment(b, rm, X0);
   const double invM = rm.totalMass > 0 ? 1.0 / rm.totalMass : 0.0;
   const Vec3 com = scale(b, Scalar::constant(invM), sum, "com");
   // Column: momentum of the subtree moving with S: X_0_j^T (Ic_j S) in world at the origin, then

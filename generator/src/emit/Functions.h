@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "../codegen/Expr.h"
 #include "../model/RobotModel.h"
 
 namespace rbdgen::emit
@@ -20,6 +21,9 @@ struct EmittedBody
   std::string text;
   OpCount ops;
 };
+
+/// The text (indented, unused locals removed) and operation counts of a finished body.
+EmittedBody finish(const cg::Block & b);
 
 /// Reads q; fills `res[b]` (std::array<Pose<S>, nbodies>) with every link's world pose.
 EmittedBody forwardKinematicsBody(const RobotModel & rm);
@@ -41,6 +45,8 @@ EmittedBody rneaBody(const RobotModel & rm, const RneaTerms & terms);
 EmittedBody massMatrixBody(const RobotModel & rm);
 /// Reads q, alpha, tau; fills `alphaD` (H by CRBA, C by RNEA, tree-sparse L^T D L factorisation).
 EmittedBody forwardDynamicsBody(const RobotModel & rm);
+/// Reads q, alpha, tau; fills `alphaD` (articulated-body algorithm).
+EmittedBody abaBody(const RobotModel & rm);
 
 /// Reads `kin` (Kinematics<S>) and `b` (Body); fills `J` (6 x nv, world axes at the link origin).
 EmittedBody jacobianBody(const RobotModel & rm);

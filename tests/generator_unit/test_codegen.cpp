@@ -1,0 +1,132 @@
+// The generator's building blocks: template filling, identifiers, constant folding, dead-code
+// removal, axis specialisation of joint kernels, SHA-256 (FIPS 180-4 test vectors).
+#include <gtest/gtest.h>
+
+#include "codegen/Expr.h"
+#include "emit/Kernels.h"
+#include "emit/Template.h"
+#include "model/RobotModel.h"
+#include "util/Sha256.h"
+
+namespace
+{
+using namespace rbdgen;
+using rbdgen::cg::Block;
+using rbdgen::cg::Scalar;
+using rbdgen::cg::Term;
+
+TEST(Template, FillsEveryPlaceholder)
+{
+  EXPECT_EQ(fillTemplate("a {{x}} b {{y}}{{x}}", {{"x", "1"}, {"y", "{{z}}"}}, "t"), "a 1 b {{z}}1");
+}
+
+TEST(Template, UnknownPlaceholderIsAnError)
+{
+  EXPECT_THROW(fillTemplate("a {{x}} {{nope}}", {{"x", "1"}}, "t"), TemplateError);
+}
+
+TEST(Template, UnusedValueIsAnError)
+{
+  EXPECT_THROW(fillTemplate("a {{x}}", {{"x", "1"}, {"extra", "2"}}, "t"), TemplateError);
+}
+
+TEST(Template, UnterminatedPlaceholderIsAnError)
+{
+  EXPECT_THROW(fillTemplate("a {{x", {{"x", "1"}}, "t"), TemplateError);
+}
+
+TEST(Identifiers, AreValidCxx)
+{
+  EXPECT_EQ(sanitizeIdentifier("my-robot"), "my_robot");
+  EXPECT_EQ(sanitizeIdentifier("2dof arm"), "_2dof_arm");
+  EXPECT_EQ(sanitizeIdentifier("a__b"), "a_b");
+  EXPECT_EQ(sanitizeIdentifier("_Foo"), "x_Foo");
+  EXPECT_EQ(sanitizeIdentifier("int"), "int_");
+  EXPECT_EQ(sanitizeIdentifier("link/1.2"), "link_1_2");
+  EXPECT_EQ(sanitizeIdentifier(""), "_");
+}
+
+TEST(Folding, ConstantsFoldAndTrivialSumsEmitNothing)
+{
+  Block b;
+  const Scalar x = Scalar::var("x"), y = Scalar::var("y");
+  EXPECT_EQ(b.sum({Term{1.0, {x}}}, "t").name(), "x");                                   // x
+  EXPECT_TRUE(b.sum({Term{0.0, {x}}, Term{2.0, {Scalar::constant(0.0), y}}}, "t").isZero()); // 0 x + 2 * 0 * y
+  const Scalar c = b.sum({Term{2.0, {Scalar::constant(3.0)}}, Term{-1.0, {}}}, "t");       // 2 * 3 - 1
+  ASSERT_TRUE(c.isConst());
+  EXPECT_EQ(c.value(), 5.0);
+  EXPECT_TRUE(b.lines().empty());
+  const Scalar s = b.sum({Term{1.0, {x, Scalar::constant(1.0)}}, Term{-1.0, {y}}}, "s");
+  ASSERT_EQ(b.lines().size(), 1u);
+  EXPECT_EQ(b.lines()[0], "const S s = x - y;");
+  EXPECT_EQ(b.mults(), 0);
+  EXPECT_EQ(b.adds(), 1);
+  EXPECT_FALSE(s.isConst());
+}
+
+TEST(Folding, UnusedLocalsAreRemoved)
+{
+  Block b;
+  const Scalar x = Scalar::var("x");
+  const Scalar used = b.sum({Term{2.0, {x}}}, "used");
+  b.sum({Term{3.0, {x}}}, "unused");
+  b.line("out = " + Block::text(used) + ";");
+  const std::string text = b.str("");
+  EXPECT_NE(text.find("const S used = S(2) * x;"), std::string::npos);
+  EXPECT_EQ(text.find("unused"), std::string::npos);
+}
+
+TEST(Folding, LiteralsRoundTrip)
+{
+  for(double v : {0.1, 1.0 / 3.0, -2.5e-7, 9.81, 123456789.0})
+  {
+    const std::string t = Block::literal(v); // "S(...)"
+    EXPECT_EQ(std::stod(t.substr(2, t.size() - 3)), v) << t;
+  }
+}
+
+// A revolute joint about z touches only the xy block of its rotation: the other entries are the
+// constants 0 and 1, so no operation is ever emitted for them.
+TEST(Kernels, RevoluteAboutZIsSpecialised)
+{
+  MovingJoint mj;
+  mj.joint = rbd::Joint(rbd::Joint::Rev, Eigen::Vector3d::UnitZ(), true, "j");
+  mj.nq = mj.nv = 1;
+  mj.tag = "j0";
+  Block b;
+  const emit::JointKernel K = emit::emitJointKernel(b, mj, "q");
+  for(int i = 0; i < 3; ++i)
+  {
+    EXPECT_TRUE(K.Xj.r[i].isZero());
+    EXPECT_TRUE(K.Xj.E(2, i).isConst());
+    EXPECT_TRUE(K.Xj.E(i, 2).isConst());
+  }
+  EXPECT_EQ(K.Xj.E(2, 2).value(), 1.0);
+  EXPECT_FALSE(K.Xj.E(0, 0).isConst());
+  EXPECT_EQ(b.calls(), 2); // one sin, one cos
+  ASSERT_EQ(K.S.size(), 1u);
+  EXPECT_EQ(K.S[0].w[2].value(), 1.0);
+  EXPECT_TRUE(K.S[0].w[0].isZero() && K.S[0].v[0].isZero());
+}
+
+TEST(Kernels, GeneralAxisUsesEveryEntry)
+{
+  MovingJoint mj;
+  mj.joint = rbd::Joint(rbd::Joint::Rev, Eigen::Vector3d(1, 2, 3), true, "j");
+  mj.nq = mj.nv = 1;
+  mj.tag = "j0";
+  Block b;
+  const emit::JointKernel K = emit::emitJointKernel(b, mj, "q");
+  for(int r = 0; r < 3; ++r)
+    for(int c = 0; c < 3; ++c) EXPECT_FALSE(K.Xj.E(r, c).isConst());
+}
+
+TEST(Sha256, FipsTestVectors)
+{
+  EXPECT_EQ(sha256Hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(sha256Hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(sha256Hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+}
+
+} // namespace

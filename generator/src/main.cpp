@@ -1,41 +1,18 @@
-// rbdgen command line: `rbdgen generate ROBOT.urdf --out DIR`, `rbdgen info ROBOT.urdf`.
+// rbdgen command line: `rbdgen <subcommand> ...`; each subcommand lives in cli/<Name>Command.cpp.
 // Exit code 0 only on success; every error is one line on stderr ("rbdgen: error: <file>: ...")
 // and leaves no partial output.
 #include <algorithm>
 #include <iostream>
-#include <set>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include <rbd/parsers/urdf.h>
 
-#include "Generate.h"
-#include "info.h"
+#include "cli/Command.h"
 
 namespace
 {
-
-struct RobotOptions
-{
-  std::string urdf;
-  bool floatingBase = false;
-  std::string baseLink;
-
-  void addTo(CLI::App & cmd)
-  {
-    cmd.add_option("urdf", urdf, "URDF file of the robot")->required()->check(CLI::ExistingFile);
-    cmd.add_flag("--floating-base", floatingBase, "attach the base link to the world by a free joint");
-    cmd.add_option("--base-link", baseLink, "link to use as the base (default: the URDF root)");
-  }
-
-  rbd::parsers::ParserResult load() const
-  {
-    rbd::parsers::ParserOptions opt;
-    opt.fixed = !floatingBase;
-    opt.baseLink = baseLink;
-    return rbd::parsers::fromUrdfFile(urdf, opt);
-  }
-};
 
 /// "rbdgen: error: <message>" on one line (newlines in the message become spaces).
 std::string errorLine(std::string message)
@@ -56,16 +33,11 @@ int main(int argc, char ** argv)
   app.set_version_flag("--version", std::string("rbdgen ") + RBDGEN_VERSION);
   app.require_subcommand(1);
 
-  RobotOptions infoRobot;
-  CLI::App * info = app.add_subcommand("info", "print the kinematic tree, masses, warnings and gravity torques");
-  infoRobot.addTo(*info);
-
-  RobotOptions genRobot;
-  std::string outDir, ns;
-  CLI::App * gen = app.add_subcommand("generate", "emit NS/dynamics.hpp for the robot into --out DIR");
-  genRobot.addTo(*gen);
-  gen->add_option("--out", outDir, "output directory")->required();
-  gen->add_option("--namespace", ns, "C++ namespace (default: the robot name, sanitised)");
+  using namespace rbdgen::cli;
+  const std::vector<Command> commands = {
+      addInfoCommand(app),
+      addGenerateCommand(app),
+  };
 
   try
   {
@@ -76,30 +48,26 @@ int main(int argc, char ** argv)
     return app.exit(e);
   }
 
-  const std::string & urdf = info->parsed() ? infoRobot.urdf : genRobot.urdf;
-  try
+  for(const Command & c : commands)
   {
-    if(info->parsed()) rbdgen::printInfo(std::cout, infoRobot.load());
-    if(gen->parsed())
+    if(!c.app->parsed()) continue;
+    try
     {
-      rbdgen::GenerateOptions opt;
-      opt.urdf = genRobot.urdf;
-      opt.floatingBase = genRobot.floatingBase;
-      opt.baseLink = genRobot.baseLink;
-      opt.outDir = outDir;
-      opt.ns = ns;
-      for(const auto & path : rbdgen::writeFiles(outDir, rbdgen::generateFiles(opt))) std::cout << path << "\n";
+      return c.run();
     }
-  }
-  catch(const rbd::parsers::UrdfError & e)
-  {
-    std::cerr << errorLine(e.what()); // already "<file>: <element> '<name>': <reason>"
+    catch(const rbd::parsers::UrdfError & e)
+    {
+      std::cerr << errorLine(e.what()); // already "<file>: <element> '<name>': <reason>"
+    }
+    catch(const std::exception & e)
+    {
+      // Errors that already name their file (scene errors...) start with it; others get the input.
+      const std::string input = c.input ? c.input() : std::string();
+      const std::string what = e.what();
+      const bool named = !input.empty() && what.rfind(input, 0) == 0;
+      std::cerr << errorLine(input.empty() || named ? what : input + ": " + what);
+    }
     return 1;
   }
-  catch(const std::exception & e)
-  {
-    std::cerr << errorLine(urdf + ": " + e.what()); // namespace, output directory...
-    return 1;
-  }
-  return 0;
+  return 1;
 }

@@ -2,14 +2,20 @@
 #
 #   find_package(rbdgen CONFIG REQUIRED)
 #   generate_robot_dynamics(TARGET panda_dynamics URDF robots/panda.urdf
-#                           [NAMESPACE panda] [FLOATING_BASE] [BASE_LINK link] [OUTPUT_DIR dir])
+#                           [NAMESPACE panda] [FLOATING_BASE] [BASE_LINK link] [OUTPUT_DIR dir] [STRICT])
+#   generate_robot_dynamics(TARGET quadruped_sim SCENE scenes/quadruped_ground.xml
+#                           [NAMESPACE ns] [OUTPUT_DIR dir] [STRICT])
 #   target_link_libraries(my_controller PRIVATE panda_dynamics)
 #   // #include <panda/dynamics.hpp>
 #
 # Defines the INTERFACE library TARGET (include directory + Eigen). The header
-# <OUTPUT_DIR>/<NAMESPACE>/dynamics.hpp is regenerated when the URDF or the rbdgen executable
-# (whose templates are built in) changes, and only then. NAMESPACE defaults to the URDF robot name
-# made into an identifier; OUTPUT_DIR to ${CMAKE_CURRENT_BINARY_DIR}/<TARGET>.
+# <OUTPUT_DIR>/<NAMESPACE>/dynamics.hpp is regenerated when the URDF (or the scene, or the URDF
+# the scene names: rbdgen writes a depfile) or the rbdgen executable (whose templates are built in)
+# changes, and only then. With SCENE the header is specialised to the scene's effects; the URDF,
+# base and base link come from the scene (URDF, FLOATING_BASE and BASE_LINK are errors then).
+# NAMESPACE defaults to the URDF robot name made into an identifier (with SCENE: the TARGET name);
+# OUTPUT_DIR to ${CMAKE_CURRENT_BINARY_DIR}/<TARGET>. STRICT: joints moving only massless links
+# (singular mass matrix, no forward dynamics) are an error instead of a warning.
 include_guard(GLOBAL)
 
 function(_rbdgen_identifier out text)
@@ -26,19 +32,30 @@ function(_rbdgen_identifier out text)
 endfunction()
 
 function(generate_robot_dynamics)
-  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE" "TARGET;URDF;NAMESPACE;BASE_LINK;OUTPUT_DIR" "")
+  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE;STRICT" "TARGET;URDF;SCENE;NAMESPACE;BASE_LINK;OUTPUT_DIR" "")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "generate_robot_dynamics: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
-  if(NOT arg_TARGET OR NOT arg_URDF)
-    message(FATAL_ERROR "generate_robot_dynamics: TARGET and URDF are required")
+  if(NOT arg_TARGET OR (NOT arg_URDF AND NOT arg_SCENE))
+    message(FATAL_ERROR "generate_robot_dynamics: TARGET and URDF (or SCENE) are required")
   endif()
-  get_filename_component(urdf "${arg_URDF}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
-  if(NOT EXISTS "${urdf}")
-    message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): URDF '${urdf}' does not exist")
+  if(arg_SCENE AND (arg_URDF OR arg_FLOATING_BASE OR arg_BASE_LINK))
+    message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): SCENE names the URDF and the base: "
+                        "URDF, FLOATING_BASE and BASE_LINK cannot be given with it")
+  endif()
+  if(arg_SCENE)
+    get_filename_component(input "${arg_SCENE}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+  else()
+    get_filename_component(input "${arg_URDF}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+  endif()
+  set(urdf "${input}")
+  if(NOT EXISTS "${input}")
+    message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): '${input}' does not exist")
   endif()
   if(arg_NAMESPACE)
     set(ns "${arg_NAMESPACE}")
+  elseif(arg_SCENE)
+    _rbdgen_identifier(ns "${arg_TARGET}")
   else()
     file(READ "${urdf}" text)
     if(NOT text MATCHES "<robot[^>]*name=\"([^\"]*)\"")
@@ -54,6 +71,9 @@ function(generate_robot_dynamics)
   set(header "${outdir}/${ns}/dynamics.hpp")
 
   set(options --out "${outdir}" --namespace "${ns}")
+  if(arg_STRICT)
+    list(APPEND options --strict)
+  endif()
   if(arg_FLOATING_BASE)
     list(APPEND options --floating-base)
   endif()
@@ -66,11 +86,22 @@ function(generate_robot_dynamics)
     message(FATAL_ERROR "generate_robot_dynamics: no rbdgen::rbdgen target (use find_package(rbdgen))")
   endif()
 
-  add_custom_command(OUTPUT "${header}"
-    COMMAND ${tool} generate "${urdf}" ${options}
-    DEPENDS "${urdf}" ${tool}
-    COMMENT "rbdgen: ${arg_URDF} -> ${ns}/dynamics.hpp"
-    VERBATIM)
+  if(arg_SCENE)
+    # The scene names its URDF: rbdgen lists both in a depfile (Ninja and Makefile generators).
+    set(depfile "${outdir}/${ns}/dynamics.hpp.d")
+    add_custom_command(OUTPUT "${header}"
+      COMMAND ${tool} generate --scene "${input}" ${options} --depfile "${depfile}"
+      DEPENDS "${input}" ${tool}
+      DEPFILE "${depfile}"
+      COMMENT "rbdgen: ${arg_SCENE} -> ${ns}/dynamics.hpp"
+      VERBATIM)
+  else()
+    add_custom_command(OUTPUT "${header}"
+      COMMAND ${tool} generate "${urdf}" ${options}
+      DEPENDS "${urdf}" ${tool}
+      COMMENT "rbdgen: ${arg_URDF} -> ${ns}/dynamics.hpp"
+      VERBATIM)
+  endif()
   add_custom_target(${arg_TARGET}_generate DEPENDS "${header}")
   add_library(${arg_TARGET} INTERFACE)
   add_dependencies(${arg_TARGET} ${arg_TARGET}_generate)

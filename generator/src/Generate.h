@@ -15,7 +15,9 @@ namespace rbdgen
 
 struct GenerateOptions
 {
-  std::string urdf;          ///< input URDF path
+  std::string urdf;          ///< input URDF path (empty with a scene: the scene names its URDF)
+  std::string scene;         ///< scene file (rbd/scene/Scene.h): emit the scene-specialised header
+  bool strict = false;       ///< joints moving only massless links are an error, not a warning
   std::string outDir;        ///< output directory; the header goes to outDir/<namespace>/dynamics.hpp
   std::string ns;            ///< C++ namespace (default: the sanitised robot name)
   bool floatingBase = false;
@@ -28,8 +30,14 @@ struct GeneratedFile
   std::string content;
 };
 
-/// The text of every generated file, in memory (nothing written).
-std::vector<GeneratedFile> generateFiles(const GenerateOptions & opt);
+/// The text of every generated file, in memory (nothing written). Warnings go to stderr
+/// ("rbdgen: warning: ..."): joints moving only massless links make the mass matrix singular, and
+/// the header then has no forward dynamics (an error with opt.strict). inputs (when given)
+/// receives the files the output depends on (URDF, scene), for a depfile.
+std::vector<GeneratedFile> generateFiles(const GenerateOptions & opt, std::vector<std::string> * inputs = nullptr);
+
+/// Makefile-syntax depfile text: "target: input1 input2\n" (spaces escaped).
+std::string depfileText(const std::string & target, const std::vector<std::string> & inputs);
 
 /// Build the generator model of a loaded robot (link frames as in the URDF).
 RobotModel robotModelFromUrdf(const rbd::parsers::ParserResult & robot);

@@ -37,6 +37,8 @@ int main(int argc, char ** argv)
   const std::vector<Command> commands = {
       addInfoCommand(app),
       addGenerateCommand(app),
+      addSimulateCommand(app),
+      addAccuracyCommand(app),
   };
 
   try

@@ -22,6 +22,8 @@ namespace
 
 using tinyxml2::XMLElement;
 
+constexpr double maxMagnitude = 1e9;
+
 const std::set<std::string> jointTypes{"revolute", "continuous", "prismatic", "fixed", "floating", "planar"};
 
 std::string at(const XMLElement * e)
@@ -60,6 +62,15 @@ public:
     throw UrdfError(file_, element, name, reason);
   }
 
+  /// Names end up in generated C++ (string literals, comments): no control characters; 'Root' is
+  /// the joint rbdgen adds at the base.
+  void checkName(const std::string & element, const std::string & name, const XMLElement * e) const
+  {
+    for(unsigned char c : name)
+      if(c < 0x20 || c == 0x7f) fail(element, name, "name contains a control character" + at(e));
+    if(element == "joint" && name == "Root") fail(element, name, "the name 'Root' is reserved for the base joint" + at(e));
+  }
+
   /// n finite numbers from attribute `attr` of e (absent: the defaults, when allowed).
   std::vector<double> numbers(const XMLElement * e, const char * attr, std::size_t n, const std::string & element,
                               const std::string & name, const std::string & what, bool required = false,
@@ -78,6 +89,12 @@ public:
                               std::to_string(n) + at(e));
     for(double x : v)
       if(!std::isfinite(x)) fail(element, name, what + " " + attr + "=\"" + text + "\" is not finite" + at(e));
+    // Values entering the dynamics (origins, axes, masses, inertias; not limits) within 1e9 SI
+    // units: the products the algorithms form (m r^2, r x f, |axis|^2) then stay finite.
+    const bool physical = what != "limit" && what != "dynamics" && what != "mimic";
+    for(double x : v)
+      if(physical && std::abs(x) > maxMagnitude)
+        fail(element, name, what + " " + attr + "=\"" + text + "\" is out of range (|value| > 1e9)" + at(e));
     return v;
   }
 
@@ -199,6 +216,7 @@ public:
     const char * rn = robot->Attribute("name");
     if(!rn || !*rn) fail("robot", "", "missing attribute 'name'" + at(robot));
     out.robotName = rn;
+    checkName("robot", rn, robot);
 
     // --- links: unique names, valid inertials ---
     std::map<std::string, const XMLElement *> links;
@@ -206,6 +224,7 @@ public:
     {
       const char * n = l->Attribute("name");
       if(!n || !*n) fail("link", "", "missing attribute 'name'" + at(l));
+      checkName("link", n, l);
       if(!links.emplace(n, l).second) fail("link", n, "duplicate link name" + at(l) + ", first at line " + std::to_string(links[n]->GetLineNum()));
       out.links.push_back(n);
       LinkInertial li;
@@ -222,6 +241,7 @@ public:
     {
       const char * n = j->Attribute("name");
       if(!n || !*n) fail("joint", "", "missing attribute 'name'" + at(j));
+      checkName("joint", n, j);
       if(!joints.emplace(n, j).second) fail("joint", n, "duplicate joint name" + at(j) + ", first at line " + std::to_string(joints[n]->GetLineNum()));
       out.joints.push_back(n);
       std::string parent, child;

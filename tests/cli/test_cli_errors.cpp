@@ -2,6 +2,7 @@
 // file, the element (where there is one) and the reason, and writes nothing: no file or directory
 // appears, and a good dynamics.hpp generated earlier into the same place stays byte-identical.
 #include <functional>
+#include <regex>
 
 #include "CliRun.h"
 
@@ -99,7 +100,34 @@ INSTANTIATE_TEST_SUITE_P(
                       BadFile{"negative_mass.urdf", {"link 'upper_arm'", "negative mass"}},
                       BadFile{"nan_mass.urdf", {"link 'upper_arm'", "mass", "not finite"}},
                       BadFile{"non_pd_inertia.urdf", {"link 'upper_arm'", "inertia", "not positive"}},
-                      BadFile{"nan_origin.urdf", {"joint 'shoulder'", "origin", "not finite"}}),
+                      BadFile{"nan_origin.urdf", {"joint 'shoulder'", "origin", "not finite"}},
+                      // issue 5: the rest of the corpus
+                      BadFile{"truncated.urdf", {"xml", "malformed"}},
+                      BadFile{"missing_parent.urdf", {"joint 'elbow'", "parent link 'forearm' does not exist"}},
+                      BadFile{"missing_parent_element.urdf", {"joint 'elbow'", "missing <parent"}},
+                      BadFile{"two_parents.urdf", {"link 'upper_arm'", "child of two joints"}},
+                      BadFile{"self_joint.urdf", {"joint 'elbow'", "to itself"}},
+                      BadFile{"no_link.urdf", {"robot 'no_link'", "no <link>"}},
+                      BadFile{"not_a_robot.urdf", {"xml 'sdf'", "root element is not <robot>"}},
+                      BadFile{"robot_without_name.urdf", {"robot ''", "missing attribute 'name'"}},
+                      BadFile{"inf_mass.urdf", {"link 'upper_arm'", "mass", "not finite"}},
+                      BadFile{"inf_rpy.urdf", {"joint 'shoulder'", "origin rpy", "not finite"}},
+                      BadFile{"nan_inertia.urdf", {"link 'upper_arm'", "inertia", "not finite"}},
+                      BadFile{"nan_limit.urdf", {"joint 'shoulder'", "limit", "not finite"}},
+                      BadFile{"nan_damping.urdf", {"joint 'shoulder'", "dynamics", "not finite"}},
+                      BadFile{"negative_inertia.urdf", {"link 'upper_arm'", "not positive semi-definite"}},
+                      BadFile{"overflow_number.urdf", {"joint 'shoulder'", "1e400", "not a list of numbers"}},
+                      BadFile{"garbage_number.urdf", {"joint 'shoulder'", "0.1m", "not a list of numbers"}},
+                      BadFile{"huge_mass.urdf", {"link 'upper_arm'", "mass", "1e308", "out of range"}},
+                      BadFile{"huge_origin.urdf", {"joint 'shoulder'", "origin", "1e300", "out of range"}},
+                      BadFile{"huge_axis.urdf", {"joint 'shoulder'", "axis", "out of range"}},
+                      BadFile{"tiny_axis.urdf", {"joint 'shoulder'", "zero axis"}},
+                      BadFile{"revolute_without_limit.urdf", {"joint 'shoulder'", "without <limit>"}},
+                      BadFile{"limits_reversed.urdf", {"joint 'shoulder'", "lower limit"}},
+                      BadFile{"mimic_unknown.urdf", {"joint 'shoulder'", "mimics unknown joint 'ghost'"}},
+                      BadFile{"spherical_joint.urdf", {"joint 'shoulder'", "unknown joint type 'spherical'"}},
+                      BadFile{"reserved_root_joint.urdf", {"joint 'Root'", "reserved"}},
+                      BadFile{"control_char_name.urdf", {"link 'upper", "control character"}}),
     [](const ::testing::TestParamInfo<BadFile> & p) { return p.param.file.substr(0, p.param.file.find('.')); });
 
 // Every file of the corpus is in the list above (a new bad file cannot be forgotten).
@@ -107,11 +135,38 @@ TEST(BadUrdfCorpus, EveryFileIsTested)
 {
   int n = 0;
   for(const auto & e : fs::directory_iterator(RBDGEN_CLI_BAD_DIR)) n += e.path().extension() == ".urdf" ? 1 : 0;
-  EXPECT_EQ(n, 13);
+  EXPECT_EQ(n, 39);
 }
 
 // ---------------------------------------------------------------------------------------------
 // Cases made on the fly
+
+// The neighbours of the corpus, fixed by one edit each, generate: the checks are not too eager
+// (values at the 1e9 magnitude limit, an axis of norm 1e-6, elements rbdgen ignores).
+TEST_F(CliTest, CorpusNeighboursGenerate)
+{
+  const std::string inertial =
+      "<inertial><origin xyz=\"1e9 0 0\"/><mass value=\"1e9\"/><inertia ixx=\"1e9\" ixy=\"0\" ixz=\"0\" iyy=\"1e9\" "
+      "iyz=\"0\" izz=\"1e9\"/></inertial>";
+  const std::string text =
+      "<?xml version=\"1.0\"?>\n<robot name=\"neighbours\">\n"
+      "  <link name=\"base\"><visual><geometry><mesh filename=\"package://x/base.stl\"/></geometry></visual></link>\n"
+      "  <link name=\"upper_arm\">" + inertial + "</link>\n"
+      "  <joint name=\"shoulder\" type=\"revolute\"><parent link=\"base\"/><child link=\"upper_arm\"/>"
+      "<origin xyz=\"-1e9 0 1e-300\" rpy=\"0 0 0\"/><axis xyz=\"0 0 1e-6\"/>"
+      "<limit lower=\"-1e30\" upper=\"1e30\" effort=\"1e30\" velocity=\"1e30\"/></joint>\n"
+      "  <transmission name=\"t\"><type>transmission_interface/SimpleTransmission</type></transmission>\n"
+      "  <gazebo reference=\"upper_arm\"><material>Gazebo/Grey</material></gazebo>\n"
+      "</robot>\n";
+  const fs::path urdf = dir() / "neighbours.urdf";
+  writeFile(urdf, text);
+  const Result r = rbdgen({"generate", urdf.string(), "--out", "out", "--namespace", "robot"}, dir());
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(dir() / "out" / "robot" / "dynamics.hpp"));
+  // The header is finite: no inf/nan constant was folded into it.
+  const std::string header = readFile(dir() / "out" / "robot" / "dynamics.hpp");
+  EXPECT_FALSE(std::regex_search(header, std::regex("\\b(inf|nan|INF|NAN|NaN)\\b")));
+}
 
 TEST_F(CliTest, TruncatedFileFailsCleanly)
 {

@@ -43,6 +43,7 @@ struct GeneratedRobot
   const char * const * bodyNames;
   const char * const * dofNames;
   const char * forwardDynamicsAlgorithm;
+  bool hasForwardDynamics;   ///< false: singular mass matrix, the forwardDynamics* pointers are null
   GeneratedFunctions<double> d;
   GeneratedFunctions<float> f;
 };

@@ -19,5 +19,7 @@ struct Command
 /// Each subcommand lives in its own file (cli/<name>.cpp) and provides one of these.
 Command addInfoCommand(CLI::App & app);
 Command addGenerateCommand(CLI::App & app);
+Command addSimulateCommand(CLI::App & app);
+Command addAccuracyCommand(CLI::App & app);
 
 } // namespace rbdgen::cli

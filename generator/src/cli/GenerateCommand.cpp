@@ -1,6 +1,10 @@
-// `rbdgen generate ROBOT.urdf --out DIR`: emit NS/dynamics.hpp.
+// `rbdgen generate ROBOT.urdf --out DIR` or `rbdgen generate --scene SCENE.xml --out DIR`: emit
+// NS/dynamics.hpp (plain, or specialised to the scene's effects).
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 #include "../Generate.h"
 #include "Command.h"
@@ -14,25 +18,49 @@ Command addGenerateCommand(CLI::App & app)
   struct Options
   {
     RobotOptions robot;
-    std::string outDir, ns;
+    std::string outDir, ns, scene, depfile;
+    bool strict = false;
   };
   auto o = std::make_shared<Options>();
-  CLI::App * cmd = app.add_subcommand("generate", "emit NS/dynamics.hpp for the robot into --out DIR");
-  o->robot.addTo(*cmd);
+  CLI::App * cmd = app.add_subcommand("generate", "emit NS/dynamics.hpp for the robot (or the scene) into --out DIR");
+  o->robot.addTo(*cmd, false);
+  cmd->add_option("--scene", o->scene, "scene file: the header is specialised to its effects (the URDF and base come "
+                                       "from the scene; no URDF argument then)")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--out", o->outDir, "output directory")->required();
-  cmd->add_option("--namespace", o->ns, "C++ namespace (default: the robot name, sanitised)");
+  cmd->add_option("--namespace", o->ns, "C++ namespace (default: the scene or robot name, sanitised)");
+  cmd->add_flag("--strict", o->strict, "joints moving only massless links (singular mass matrix) are an error");
+  cmd->add_option("--depfile", o->depfile, "also write a Makefile-syntax depfile (header: inputs) for the build system");
   return {cmd,
           [o] {
+            if(o->scene.empty() && o->robot.urdf.empty()) throw std::invalid_argument("generate: give a URDF or --scene");
             GenerateOptions opt;
             opt.urdf = o->robot.urdf;
+            opt.scene = o->scene;
+            opt.strict = o->strict;
             opt.floatingBase = o->robot.floatingBase;
             opt.baseLink = o->robot.baseLink;
             opt.outDir = o->outDir;
             opt.ns = o->ns;
-            for(const auto & path : writeFiles(o->outDir, generateFiles(opt))) std::cout << path << "\n";
+            std::vector<std::string> inputs;
+            const std::vector<GeneratedFile> files = generateFiles(opt, &inputs);
+            const std::vector<std::string> written = writeFiles(o->outDir, files);
+            if(!o->depfile.empty())
+            {
+              // The depfile names the header by the path given to the build system (absolute).
+              const std::string target = std::filesystem::absolute(written.front()).lexically_normal().string();
+              const std::string tmp = o->depfile + ".rbdgen-tmp";
+              {
+                std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+                out << depfileText(target, inputs);
+                if(!out) throw std::runtime_error(o->depfile + ": cannot write file");
+              }
+              std::filesystem::rename(tmp, o->depfile);
+            }
+            for(const auto & path : written) std::cout << path << "\n";
             return 0;
           },
-          [o] { return o->robot.urdf; }};
+          [o] { return o->scene.empty() ? o->robot.urdf : o->scene; }};
 }
 
 } // namespace rbdgen::cli

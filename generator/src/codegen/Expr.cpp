@@ -1,4 +1,5 @@
 #include "Expr.h"
+#include "SinCosBatch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -180,9 +181,12 @@ std::string Block::str(const std::string & indent) const
     }
     forEachIdentifier(rhs, [&](std::string id) { used.insert(std::move(id)); });
   }
-  std::string out;
+  std::vector<std::string> kept;
   for(std::size_t k = 0; k < lines_.size(); ++k)
-    if(keep[k]) out += indent + lines_[k] + "\n";
+    if(keep[k]) kept.push_back(lines_[k]);
+  if(batchSinCos_) kept = rbdgen::cg::batchSinCos(kept);
+  std::string out;
+  for(const std::string & l : kept) out += indent + l + "\n";
   return out;
 }
 

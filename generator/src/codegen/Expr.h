@@ -61,12 +61,15 @@ public:
   long mults() const { return mults_; }
   long adds() const { return adds_; }
   long calls() const { return calls_; }
+  /// Emit the sin/cos of all joint angles as one vectorised call (default; see SinCosBatch.h).
+  void setBatchSinCos(bool on) { batchSinCos_ = on; }
 
 private:
   std::string fresh(const std::string & hint);
   std::vector<std::string> lines_;
   std::vector<std::string> taken_;
   long mults_ = 0, adds_ = 0, calls_ = 0;
+  bool batchSinCos_ = true;
 };
 
 /// Scalar helpers built on Block::sum.

@@ -136,7 +136,8 @@ EmittedBody rneaBody(const RobotModel & rm, const RneaTerms & terms)
   std::vector<Force> f(n);
   // a_0 = [0; g]: gravity as a fictitious upward acceleration of the world (RBDyn).
   Motion a0 = Motion::zero();
-  if(terms.gravity) a0.v[2] = Scalar::constant(9.81);
+  if(terms.gravity)
+    for(int c = 0; c < 3; ++c) a0.v[c] = Scalar::constant(-terms.gravityVector[c]);
   for(std::size_t k = 0; k < n; ++k)
   {
     const MovingJoint & mj = rm.joints[k];
@@ -240,18 +241,28 @@ std::vector<int> dofParents(const RobotModel & rm)
 
 } // namespace
 
-EmittedBody massMatrixBody(const RobotModel & rm)
+std::vector<std::vector<Scalar>> emitMassMatrix(Block & b, const RobotModel & rm, const std::vector<double> & armature)
+{
+  const auto K = emitKernels(b, rm, "q");
+  const auto Hfull = emitCrba(b, rm, K);
+  const auto nv = static_cast<std::size_t>(rm.nv);
+  // Symmetric view: L[r][c] for c <= r; H_ii += armature_i.
+  std::vector<std::vector<Scalar>> L(nv, std::vector<Scalar>(nv, Scalar::constant(0)));
+  for(std::size_t r = 0; r < nv; ++r)
+    for(std::size_t c = 0; c <= r; ++c) L[r][c] = Hfull[r][c].isZero() ? Hfull[c][r] : Hfull[r][c];
+  for(std::size_t i = 0; i < armature.size() && i < nv; ++i)
+    if(armature[i] != 0.0) L[i][i] = b.sum({Term{1.0, {L[i][i]}}, Term{armature[i], {}}}, fmt::format("Ha{}", i));
+  return L;
+}
+
+EmittedBody massMatrixBody(const RobotModel & rm, const std::vector<double> & armature)
 {
   Block b;
-  const auto K = emitKernels(b, rm, "q");
-  const auto H = emitCrba(b, rm, K);
+  const auto L = emitMassMatrix(b, rm, armature);
   for(int r = 0; r < rm.nv; ++r)
     for(int c = 0; c <= r; ++c)
     {
-      // H is filled on the lower triangle: entry (r, c) with r >= c sits in H[r][c] or H[c][r].
-      const Scalar & x = H[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].isZero()
-                             ? H[static_cast<std::size_t>(c)][static_cast<std::size_t>(r)]
-                             : H[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
+      const Scalar & x = L[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
       if(x.isZero()) continue;
       b.line(fmt::format("H({}, {}) = {};", r, c, Block::text(x)));
       if(r != c) b.line(fmt::format("H({}, {}) = {};", c, r, Block::text(x)));
@@ -259,20 +270,20 @@ EmittedBody massMatrixBody(const RobotModel & rm)
   return finish(b);
 }
 
-EmittedBody forwardDynamicsBody(const RobotModel & rm)
+EmittedBody forwardDynamicsBody(const RobotModel & rm, const FdOptions & opt)
 {
   Block b;
-  const auto K = emitKernels(b, rm, "q");
-  auto Hfull = emitCrba(b, rm, K);
   const auto nv = static_cast<std::size_t>(rm.nv);
-  // Symmetric view: L[r][c] for c <= r.
-  std::vector<std::vector<Scalar>> L(nv, std::vector<Scalar>(nv, Scalar::constant(0)));
-  for(std::size_t r = 0; r < nv; ++r)
-    for(std::size_t c = 0; c <= r; ++c) L[r][c] = Hfull[r][c].isZero() ? Hfull[c][r] : Hfull[r][c];
-  // Right-hand side: tau - C(q, alpha) with C by an inline RNEA (no alphaD).
-  b.line("const Tangent<S> C = nonlinear_effects<S>(q, alpha);");
+  std::vector<std::vector<Scalar>> L = emitMassMatrix(b, rm, opt.armature);
+  // Right-hand side: tau - C.
   std::vector<Scalar> x(nv);
-  for(std::size_t i = 0; i < nv; ++i) x[i] = b.sum({Term{1.0, {Scalar::var(fmt::format("tau[{}]", i))}}, Term{-1.0, {Scalar::var(fmt::format("C[{}]", i))}}}, fmt::format("x{}", i));
+  if(opt.biasCall.empty())
+    for(std::size_t i = 0; i < nv; ++i) x[i] = Scalar::var(fmt::format("tau[{}]", i));
+  else
+  {
+    b.line("const Tangent<S> C = " + opt.biasCall + ";");
+    for(std::size_t i = 0; i < nv; ++i) x[i] = b.sum({Term{1.0, {Scalar::var(fmt::format("tau[{}]", i))}}, Term{-1.0, {Scalar::var(fmt::format("C[{}]", i))}}}, fmt::format("x{}", i));
+  }
   const std::vector<int> lambda = dofParents(rm);
   b.comment("tree-sparse factorisation H = L^T D L (Featherstone, RBDA 6.5), in place on the lower triangle");
   std::vector<Scalar> invD(nv);

@@ -3,6 +3,9 @@
 // written from the robot model with every recursion unrolled.
 
 #include <string>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include "../codegen/Expr.h"
 #include "../model/RobotModel.h"
@@ -37,14 +40,25 @@ struct RneaTerms
   bool acceleration = true;  ///< alphaD
   bool gravity = true;
   bool externalForces = false; ///< `fext[b]`: wrench on each link, world coordinates at the world origin
+  Eigen::Vector3d gravityVector = Eigen::Vector3d(0, 0, -9.81); ///< world, m/s^2 (used when `gravity`)
 };
 /// Reads q (+ alpha, alphaD, fext per terms); fills `tau`.
 EmittedBody rneaBody(const RobotModel & rm, const RneaTerms & terms);
 
-/// Reads q; fills `H` (composite rigid-body algorithm).
-EmittedBody massMatrixBody(const RobotModel & rm);
-/// Reads q, alpha, tau; fills `alphaD` (H by CRBA, C by RNEA, tree-sparse L^T D L factorisation).
-EmittedBody forwardDynamicsBody(const RobotModel & rm);
+/// Reads q; fills `H` (composite rigid-body algorithm), plus diag(armature) when given (per dof).
+EmittedBody massMatrixBody(const RobotModel & rm, const std::vector<double> & armature = {});
+/// Options of the CRBA + LTDL forward dynamics (the plain header uses the defaults).
+struct FdOptions
+{
+  /// Statement right-hand side giving the bias C (Tangent<S>) subtracted from tau; empty: no bias.
+  std::string biasCall = "nonlinear_effects<S>(q, alpha)";
+  std::vector<double> armature; ///< per dof, added to the diagonal of H (empty: none)
+};
+/// Reads q, alpha, tau; fills `alphaD` from (H + diag(armature)) alphaD = tau - C (H by CRBA, C by
+/// `biasCall`, tree-sparse L^T D L factorisation).
+EmittedBody forwardDynamicsBody(const RobotModel & rm, const FdOptions & opt = {});
+/// Lower triangle of H + diag(armature) (CRBA) as symbols, H[r][c] for c <= r.
+std::vector<std::vector<cg::Scalar>> emitMassMatrix(cg::Block & b, const RobotModel & rm, const std::vector<double> & armature);
 /// Reads q, alpha, tau; fills `alphaD` (articulated-body algorithm).
 EmittedBody abaBody(const RobotModel & rm);
 

@@ -1,6 +1,8 @@
 #include "Template.h"
 
 #include <set>
+#include <sstream>
+#include <vector>
 
 namespace rbdgen
 {
@@ -32,6 +34,48 @@ std::string fillTemplate(const std::string & text, const std::map<std::string, s
   }
   for(const auto & [name, value] : values)
     if(!used.count(name)) throw TemplateError(templateName + ": value '" + name + "' is not used by the template");
+  return out;
+}
+
+std::string selectSections(const std::string & text, const std::map<std::string, bool> & flags,
+                           const std::string & templateName)
+{
+  std::string out;
+  std::set<std::string> used;
+  std::vector<std::pair<std::string, bool>> open; // section name, kept
+  std::istringstream in(text);
+  std::string line;
+  int lineNo = 0;
+  auto where = [&] { return templateName + ":" + std::to_string(lineNo) + ": "; };
+  while(std::getline(in, line))
+  {
+    ++lineNo;
+    const bool isOpen = line.rfind("{{#", 0) == 0, isClose = line.rfind("{{/", 0) == 0;
+    if((isOpen || isClose) && line.size() > 5 && line.compare(line.size() - 2, 2, "}}") == 0)
+    {
+      const std::string name = line.substr(3, line.size() - 5);
+      if(isOpen)
+      {
+        const auto it = flags.find(name);
+        if(it == flags.end()) throw TemplateError(where() + "section '" + name + "' has no flag");
+        used.insert(name);
+        open.emplace_back(name, it->second);
+      }
+      else
+      {
+        if(open.empty() || open.back().first != name) throw TemplateError(where() + "unbalanced section end '" + name + "'");
+        open.pop_back();
+      }
+      continue;
+    }
+    bool keep = true;
+    for(const auto & o : open) keep = keep && o.second;
+    if(keep) out += line + "\n";
+  }
+  if(!open.empty()) throw TemplateError(templateName + ": section '" + open.back().first + "' is not closed");
+  if(!text.empty() && text.back() != '\n' && !out.empty()) out.pop_back();
+  for(const auto & [name, value] : flags)
+    if(!used.count(name)) throw TemplateError(templateName + ": flag '" + name + "' is not used by the template");
   return out;
 }
 

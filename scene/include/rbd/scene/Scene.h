@@ -62,7 +62,8 @@ struct Outputs
 /// Simple controller used by `rbdgen simulate` (the generated step() takes tau from the caller).
 struct Controller
 {
-  enum class Type { ZeroTorque, PdHold } type = Type::ZeroTorque;
+  /// PdGravity (added): PD hold plus the scene's gravity torques g(q) (gravity compensation).
+  enum class Type { ZeroTorque, PdHold, PdGravity } type = Type::ZeroTorque;
   double kp = 0.0, kd = 0.0;          ///< PD hold: tau = kp (q_target - q) - kd alpha on 1-dof joints
   std::map<std::string, double> target; ///< joint name -> target position (default: initial q)
 };

@@ -1,0 +1,46 @@
+#include "Checks.h"
+
+#include <cstdio>
+
+#include <benchmark/benchmark.h>
+
+namespace rbdbench
+{
+
+const std::vector<std::string> kAlgorithms = {"fk",       "fk_vel", "id",      "gravity", "nle", "mass_matrix",
+                                              "fd",       "fd_aba", "fd_crba", "jacobian", "com"};
+
+void CheckLog::add(const std::string & impl, const std::string & algo, double maxErr, double tol,
+                   const std::string & note)
+{
+  results_.push_back({impl, algo, maxErr, tol, note});
+}
+
+bool CheckLog::agrees(const std::string & impl, const std::string & algo) const
+{
+  for(const auto & r : results_)
+    if(r.impl == impl && r.algo == algo) return r.ok();
+  return false;
+}
+
+bool CheckLog::allOk() const
+{
+  for(const auto & r : results_)
+    if(!r.ok()) return false;
+  return true;
+}
+
+void CheckLog::publish(const std::string & robot) const
+{
+  for(const auto & r : results_)
+  {
+    char line[160];
+    std::snprintf(line, sizeof line, "%.2e %s (tol %.0e)", r.maxErr, r.ok() ? "ok" : "DISAGREES", r.tol);
+    std::printf("check %-14s %-10s %-12s %s%s%s\n", robot.c_str(), r.impl.c_str(), r.algo.c_str(), line,
+                r.note.empty() ? "" : "  ", r.note.c_str());
+    benchmark::AddCustomContext("check/" + r.impl + "/" + r.algo, std::string(line) + (r.note.empty() ? "" : "; ") + r.note);
+  }
+  std::fflush(stdout);
+}
+
+} // namespace rbdbench

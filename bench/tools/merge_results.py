@@ -1,0 +1,221 @@
+#!/usr/bin/env python3
+"""Merge the outputs of scripts/bench.sh into one table (markdown + CSV).
+
+Inputs (in --raw DIR): gcc_<robot>.json and clang_<robot>.json (Google Benchmark, medians of the
+repetitions), costs.csv (bench_costs), callgrind.csv (robot,algo,instructions per call),
+meta.txt (key=value lines: cpu, gcc, clang, date, compile times...). Outputs: --md, --csv.
+Time = cpu_time of the median repetition, ns per call.
+"""
+import argparse
+import csv
+import glob
+import json
+import os
+
+ALGOS = ["fk", "fk_vel", "id", "gravity", "nle", "mass_matrix", "fd", "fd_aba", "fd_crba", "jacobian", "com"]
+ALGO_TITLES = {
+    "fk": "FK, all links", "fk_vel": "FK + velocities", "id": "inverse dynamics", "gravity": "gravity torques",
+    "nle": "nonlinear effects", "mass_matrix": "mass matrix", "fd": "forward dynamics (default)",
+    "fd_aba": "forward dynamics ABA", "fd_crba": "forward dynamics CRBA+LTDL", "jacobian": "Jacobian (last moving link)",
+    "com": "centre of mass"}
+# peers time one forward-dynamics algorithm: compare every forward-dynamics row with it
+PEER_ALGO = {"fd_aba": "fd", "fd_crba": "fd"}
+PEERS = ["kdl", "mujoco"]
+THRESHOLD = 3.0
+
+
+def load_json(path):
+    with open(path) as f:
+        data = json.load(f)
+    times = {}
+    for b in data.get("benchmarks", []):
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+            continue
+        name = b.get("run_name", b["name"])
+        robot, algo, impl = name.split("/")[:3]
+        scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[b.get("time_unit", "ns")]
+        times[(robot, algo, impl)] = b["cpu_time"] * scale
+    return data.get("context", {}), times
+
+
+def fmt_ns(v):
+    if v is None:
+        return "n/a"
+    return f"{v:,.0f}" if v >= 100 else f"{v:.1f}"
+
+
+def fmt_ratio(v):
+    if v is None:
+        return "–"
+    flag = " ⚠" if v < THRESHOLD else ""
+    return f"{v:.1f}×{flag}"
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--raw", required=True)
+    ap.add_argument("--md", required=True)
+    ap.add_argument("--csv", required=True)
+    args = ap.parse_args()
+
+    meta = {}
+    meta_path = os.path.join(args.raw, "meta.txt")
+    if os.path.exists(meta_path):
+        for line in open(meta_path):
+            if "=" in line:
+                k, v = line.rstrip("\n").split("=", 1)
+                meta[k] = v
+
+    robots, contexts, t = [], {}, {}
+    for compiler in ("gcc", "clang"):
+        for path in sorted(glob.glob(os.path.join(args.raw, f"{compiler}_*.json"))):
+            ctx, times = load_json(path)
+            robot = ctx.get("robot") or os.path.basename(path)[len(compiler) + 1:-5]
+            if robot not in robots:
+                robots.append(robot)
+            if compiler == "gcc" or robot not in contexts:
+                contexts[robot] = ctx
+            for (r, algo, impl), v in times.items():
+                t[(r, algo, impl, compiler)] = v
+    order = ["ur5e", "ur5", "iiwa7", "panda_arm", "panda", "quadruped", "solo12", "humanoid", "talos_reduced"]
+    robots.sort(key=lambda r: (order.index(r) if r in order else len(order), r))
+
+    costs = {}
+    costs_path = os.path.join(args.raw, "costs.csv")
+    if os.path.exists(costs_path):
+        for row in csv.DictReader(open(costs_path)):
+            costs[(row["robot"], row["algo"])] = row
+    instr = {}
+    cg_path = os.path.join(args.raw, "callgrind.csv")
+    if os.path.exists(cg_path):
+        for row in csv.DictReader(open(cg_path)):
+            instr[(row["robot"], row["algo"])] = float(row["instructions"])
+
+    def get(robot, algo, impl, compiler="gcc"):
+        return t.get((robot, algo, impl, compiler))
+
+    rows = []
+    for robot in robots:
+        for algo in ALGOS:
+            g = get(robot, algo, "gen_double", "gcc")
+            c = get(robot, algo, "gen_double", "clang")
+            floats = [v for v in (get(robot, algo, "gen_float", "gcc"), get(robot, algo, "gen_float", "clang")) if v]
+            f = min(floats) if floats else None
+            rt = get(robot, algo, "runtime", "gcc")
+            peers = {p: get(robot, PEER_ALGO.get(algo, algo), p, "gcc") for p in PEERS}
+            best_peer = min([v for v in peers.values() if v], default=None)
+            gens = [v for v in (g, c) if v]
+            worst_gen = max(gens) if gens else None
+            rows.append({
+                "robot": robot, "algo": algo, "gen_gcc": g, "gen_clang": c, "gen_float": f, "runtime": rt,
+                "kdl": peers["kdl"], "mujoco": peers["mujoco"],
+                "peer_over_gen_gcc": best_peer / g if best_peer and g else None,
+                "peer_over_gen_clang": best_peer / c if best_peer and c else None,
+                "runtime_over_gen": rt / worst_gen if rt and worst_gen else None,
+            })
+
+    out = []
+    out.append(f"# rbdgen benchmark — {meta.get('date', '?')}\n")
+    out.append(f"- CPU: **{meta.get('cpu', '?')}** ({meta.get('cores', '?')} cores, shared: differences under 1.3× are noise)")
+    out.append(f"- g++: {meta.get('gcc', '?')}; clang++: {meta.get('clang', '?')}; flags `-O3 -march=native -DNDEBUG` (Release)")
+    out.append(f"- Peers: {meta.get('peers', '?')}")
+    out.append(f"- Method: Google Benchmark, {meta.get('repetitions', '?')} repetitions (median shown), min time "
+               f"{meta.get('min_time', '?')} s per repetition, CPU time; each iteration takes the next of 256 seeded "
+               "random states (unit quaternions; joints in [-3, 3], velocities, accelerations, torques in [-2, 2]); "
+               "results kept live with `benchmark::DoNotOptimize`.")
+    out.append("- Every cell includes what it needs from q (forward kinematics, velocities): runtime = "
+               "`forwardKinematics` (+ `forwardVelocity`) + the algorithm on a `MultiBodyConfig`; MuJoCo = "
+               "`mj_kinematics` + `mj_comPos` (+ `mj_comVel`) + the algorithm, inputs copied into `mjData`; "
+               "KDL = one solver call. Generated = one call of the generated function (`body_velocities` for FK + "
+               "velocities, `jacobian(body, q)` and `center_of_mass(q)` from q).")
+    out.append("- Peers are timed only where they agree with the runtime (agreement table below). Forward dynamics "
+               "rows compare with each peer's one forward-dynamics call (KDL `ChainFdSolver_RNE`, MuJoCo `mj_forward` "
+               "with constraints/contacts/passive forces disabled).")
+    out.append(f"- Ratios: best peer / generated (per compiler), runtime / slower generated; ⚠ = below {THRESHOLD:.0f}×.\n")
+    out.append("## Time per call (ns)\n")
+    out.append("| robot (nv) | algorithm | gen double g++ | gen double clang | gen float | runtime | KDL | MuJoCo | best peer / gen g++ | best peer / gen clang | runtime / gen |")
+    out.append("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|")
+    for r in rows:
+        nv = contexts.get(r["robot"], {}).get("nv", "?")
+        fl = " +free" if contexts.get(r["robot"], {}).get("floating") == "yes" else ""
+        out.append(f"| {r['robot']} ({nv}{fl}) | {ALGO_TITLES[r['algo']]} | {fmt_ns(r['gen_gcc'])} | {fmt_ns(r['gen_clang'])} | "
+                   f"{fmt_ns(r['gen_float'])} | {fmt_ns(r['runtime'])} | {fmt_ns(r['kdl'])} | {fmt_ns(r['mujoco'])} | "
+                   f"{fmt_ratio(r['peer_over_gen_gcc'])} | {fmt_ratio(r['peer_over_gen_clang'])} | {fmt_ratio(r['runtime_over_gen'])} |")
+    misses = [r for r in rows if any(v is not None and v < THRESHOLD for v in (r["peer_over_gen_gcc"], r["peer_over_gen_clang"]))]
+    out.append(f"\nCells below {THRESHOLD:.0f}× the best peer: {len(misses)} of "
+               f"{sum(1 for r in rows if r['peer_over_gen_gcc'] is not None)} with a peer.\n")
+
+    out.append("## Which link, which algorithm\n")
+    out.append("| robot | Jacobian link | generated forward_dynamics() | KDL | MuJoCo |")
+    out.append("|---|---|---|---|---|")
+    for robot in robots:
+        ctx = contexts.get(robot, {})
+        out.append(f"| {robot} | {ctx.get('jacobian_body', '?')} | {ctx.get('fd_algorithm', '?').split(' (')[0]} | "
+                   f"{ctx.get('peer/kdl', 'not built')} | {ctx.get('peer/mujoco', 'not built')} |")
+
+    out.append("\n## Agreement with the runtime (max relative error over 8 states; FD of the generated code: error / cond(H))\n")
+    impls = ["gen_double", "gen_float", "kdl", "mujoco"]
+    out.append("| robot | implementation | " + " | ".join(ALGOS) + " |")
+    out.append("|---|---|" + "---|" * len(ALGOS))
+    for robot in robots:
+        ctx = contexts.get(robot, {})
+        for impl in impls:
+            cells = []
+            any_check = False
+            for algo in ALGOS:
+                v = ctx.get(f"check/{impl}/{algo}")
+                if v is None:
+                    cells.append("n/a")
+                else:
+                    any_check = True
+                    err, status = v.split(" ")[:2]
+                    cells.append(err if status == "ok" else f"**{err} DISAGREES**")
+            if any_check:
+                out.append(f"| {robot} | {impl} | " + " | ".join(cells) + " |")
+
+    if costs:
+        out.append("\n## Cost model: emitted operations vs Featherstone, instructions per call\n")
+        out.append("Emitted = operations in the generated function after constant folding and dead-code removal "
+                   "(mults, adds; calls = sin/cos/sqrt/divisions, of which sin+cos). Featherstone's counts are for an "
+                   "unbranched chain of n revolute joints (RNEA (93n−69)m+(81n−66)a, CRBA (10n²+22n−32)m+(6n²+37n−43)a, "
+                   "ABA (224n−259)m+(205n−248)a); for branched or floating robots they are given with n = nv as an "
+                   "indication. Instructions per call: `valgrind --tool=callgrind` on `callgrind_<robot>` "
+                   "(g++, `-O3 -march=native -mno-avx512f`), (I(2N) − I(N)) / N.\n")
+        out.append("| robot (nv) | algorithm | mults | adds | calls (sin+cos) | Featherstone m | Featherstone a | emitted / Featherstone (m+a) | instructions / call | ns gen g++ |")
+        out.append("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|")
+        for robot in robots:
+            for algo in ALGOS:
+                c = costs.get((robot, algo)) or (costs.get((robot, "fd_crba" if "CRBA" in contexts.get(robot, {}).get("fd_algorithm", "") else "fd_aba")) if algo == "fd" else None)
+                if not c:
+                    continue
+                fm, fa = c["feather_mults"], c["feather_adds"]
+                ratio = f"{(int(c['mults']) + int(c['adds'])) / (int(fm) + int(fa)):.2f}" if fm and fa else ""
+                ins = instr.get((robot, algo))
+                out.append(f"| {robot} ({c['nv']}) | {ALGO_TITLES[algo]} | {c['mults']} | {c['adds']} | {c['calls']} ({c['sincos']}) | "
+                           f"{fm} | {fa} | {ratio} | {f'{ins:,.0f}' if ins is not None else 'n/a'} | {fmt_ns(get(robot, algo, 'gen_double'))} |")
+
+    if "compile_gcc" in meta or "compile_clang" in meta:
+        out.append("\n## Compile time\n")
+        out.append(f"{meta.get('compile_what', '')}: g++ **{meta.get('compile_gcc', '?')} s**, clang++ "
+                   f"**{meta.get('compile_clang', '?')} s** (target < 30 s).")
+    text = "\n".join(out) + "\n"
+    with open(args.md, "w") as f:
+        f.write(text)
+
+    with open(args.csv, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["robot", "nv", "algo", "gen_double_gcc_ns", "gen_double_clang_ns", "gen_float_ns", "runtime_ns",
+                    "kdl_ns", "mujoco_ns", "best_peer_over_gen_gcc", "best_peer_over_gen_clang", "runtime_over_gen",
+                    "mults", "adds", "calls", "instructions"])
+        for r in rows:
+            c = costs.get((r["robot"], r["algo"]), {})
+            w.writerow([r["robot"], contexts.get(r["robot"], {}).get("nv", ""), r["algo"]] +
+                       ["" if r[k] is None else f"{r[k]:.4g}" for k in ("gen_gcc", "gen_clang", "gen_float", "runtime", "kdl", "mujoco",
+                                                                        "peer_over_gen_gcc", "peer_over_gen_clang", "runtime_over_gen")] +
+                       [c.get("mults", ""), c.get("adds", ""), c.get("calls", ""),
+                        "" if (r["robot"], r["algo"]) not in instr else f"{instr[(r['robot'], r['algo'])]:.0f}"])
+    print(text)
+
+
+if __name__ == "__main__":
+    main()

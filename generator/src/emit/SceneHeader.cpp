@@ -1,0 +1,382 @@
+// Assembly of a scene header: which sections of templates/scene_dynamics.hpp.in exist (a disabled
+// effect's section is removed whole), the emitted bodies, per-joint integration lines, outputs.
+#include "SceneHeader.h"
+
+#include <map>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include <rbd/scene/Integrators.h>
+
+#include "../Generate.h"
+#include "Kernels.h"
+#include "Template.h"
+
+namespace rbdgen::emit
+{
+namespace
+{
+
+const std::string & templateText(const std::string & name)
+{
+  const auto & t = embeddedTemplates();
+  const auto it = t.find(name);
+  if(it == t.end()) throw std::logic_error("template " + name + " is not embedded");
+  return it->second;
+}
+
+std::string fill(const std::string & name, const std::map<std::string, bool> & flags,
+                 const std::map<std::string, std::string> & values)
+{
+  return fillTemplate(selectSections(templateText(name), flags, "templates/" + name), values, "templates/" + name);
+}
+
+std::string quoted(const std::vector<std::string> & names)
+{
+  std::string s;
+  for(const auto & n : names) s += (s.empty() ? "\"" : ", \"") + n + "\"";
+  return s;
+}
+
+std::string literal(double v)
+{
+  return Block::literal(v);
+}
+
+int countNonZero(const std::vector<double> & v)
+{
+  int n = 0;
+  for(double x : v) n += x != 0.0;
+  return n;
+}
+
+int bodyIndex(const RobotModel & rm, const std::string & link)
+{
+  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
+    if(rm.bodies[i].name == link) return static_cast<int>(i);
+  throw std::invalid_argument("link '" + link + "' is not in the scene's robot");
+}
+
+// q (+) dq, dq/dt and quaternion normalisation, one line (or block) per moving joint.
+struct JointLines
+{
+  std::string integrate, derivative, normalize;
+  bool free = false, spherical = false, planar = false;
+};
+
+JointLines jointLines(const RobotModel & rm)
+{
+  JointLines L;
+  for(const MovingJoint & mj : rm.joints)
+  {
+    const int qi = mj.qIndex, vi = mj.vIndex;
+    L.integrate += fmt::format("  // {} ({})\n", mj.name, describeJoint(mj));
+    L.derivative += fmt::format("  // {}\n", mj.name);
+    switch(mj.joint.type())
+    {
+      case rbd::JointType::Rev:
+      case rbd::JointType::Prism:
+      case rbd::JointType::Cylindrical:
+        for(int c = 0; c < mj.nv; ++c)
+        {
+          L.integrate += fmt::format("  res[{}] += dq[{}];\n", qi + c, vi + c);
+          L.derivative += fmt::format("  qd[{}] = alpha[{}];\n", qi + c, vi + c);
+        }
+        break;
+      case rbd::JointType::Planar:
+        L.planar = true;
+        L.integrate += fmt::format("  detail::integrate_planar<S>(res.data() + {}, dq.data() + {});\n", qi, vi);
+        L.derivative += fmt::format("  qd[{0}] = alpha[{1}];\n"
+                                    "  qd[{2}] = std::cos(q[{0}]) * alpha[{3}] - std::sin(q[{0}]) * alpha[{4}];\n"
+                                    "  qd[{5}] = std::sin(q[{0}]) * alpha[{3}] + std::cos(q[{0}]) * alpha[{4}];\n",
+                                    qi, vi, qi + 1, vi + 1, vi + 2, qi + 2);
+        break;
+      case rbd::JointType::Spherical:
+      case rbd::JointType::Free:
+      {
+        const bool isFree = mj.joint.type() == rbd::JointType::Free;
+        (isFree ? L.free : L.spherical) = true;
+        L.integrate += isFree ? fmt::format("  detail::integrate_free<S>(res.data() + {}, dq.data() + {});\n", qi, vi)
+                              : fmt::format("  detail::rotate_quaternion<S>(res.data() + {}, dq.data() + {});\n", qi, vi);
+        // d/dt quat = quat (x) [0; w] / 2
+        const int w = qi, x = qi + 1, y = qi + 2, z = qi + 3, a = vi, b = vi + 1, c = vi + 2;
+        L.derivative += fmt::format("  qd[{0}] = S(-0.5) * (q[{1}] * alpha[{4}] + q[{2}] * alpha[{5}] + q[{3}] * alpha[{6}]);\n"
+                                    "  qd[{1}] = S(0.5) * (q[{0}] * alpha[{4}] + q[{2}] * alpha[{6}] - q[{3}] * alpha[{5}]);\n"
+                                    "  qd[{2}] = S(0.5) * (q[{0}] * alpha[{5}] + q[{3}] * alpha[{4}] - q[{1}] * alpha[{6}]);\n"
+                                    "  qd[{3}] = S(0.5) * (q[{0}] * alpha[{6}] + q[{1}] * alpha[{5}] - q[{2}] * alpha[{4}]);\n",
+                                    w, x, y, z, a, b, c);
+        if(isFree)
+          L.derivative += fmt::format("  qd.template segment<3>({}) = detail::quaternion_rotation<S>(q.data() + {}) * "
+                                      "alpha.template segment<3>({});\n",
+                                      qi + 4, qi, vi + 3);
+        L.normalize += fmt::format("  state.q.template segment<4>({0}) /= state.q.template segment<4>({0}).norm();\n", qi);
+        break;
+      }
+      default:
+        throw std::logic_error("joint '" + mj.name + "': no integration rule for its type");
+    }
+  }
+  auto trim = [](std::string & s) {
+    if(!s.empty() && s.back() == '\n') s.pop_back();
+  };
+  trim(L.integrate);
+  trim(L.derivative);
+  trim(L.normalize);
+  return L;
+}
+
+std::string initialStateLines(const rbd::scene::Scene & scene, const rbd::scene::SceneRobot & sr)
+{
+  const rbd::scene::SceneDynamics dyn(sr, scene);
+  const rbd::scene::SceneState<double> s0 = rbd::scene::initialState(dyn);
+  std::string out;
+  std::string q, a;
+  for(Eigen::Index i = 0; i < s0.q.size(); ++i) q += (i ? ", " : "") + literal(s0.q[i]);
+  for(Eigen::Index i = 0; i < s0.alpha.size(); ++i) a += (i ? ", " : "") + literal(s0.alpha[i]);
+  if(s0.q.size() > 0) out += "  s.q << " + q + ";\n";
+  else out += "  s.q.setZero();\n";
+  if(s0.alpha.size() > 0 && !s0.alpha.isZero()) out += "  s.alpha << " + a + ";";
+  else out += "  s.alpha.setZero();";
+  return out;
+}
+
+std::string outputs(const RobotModel & rm, const rbd::scene::Scene & scene, const SceneEffects & fx)
+{
+  const rbd::scene::Outputs & o = scene.outputs;
+  std::string poses, jacobians;
+  for(const std::string & link : o.poses)
+  {
+    const int b = bodyIndex(rm, link);
+    poses += fill("scene_output_pose.hpp.in", {},
+                  {{"link", link}, {"ident", rm.bodies[static_cast<std::size_t>(b)].ident}, {"body", linkPoseBody(rm, b).text}});
+  }
+  for(const std::string & link : o.jacobians)
+  {
+    const int b = bodyIndex(rm, link);
+    jacobians += fill("scene_output_jacobian.hpp.in", {},
+                      {{"link", link}, {"ident", rm.bodies[static_cast<std::size_t>(b)].ident},
+                       {"body", linkJacobianBody(rm, b).text}});
+  }
+  const bool potential = o.energy && fx.gravity.has_value();
+  std::map<std::string, std::string> v{{"poses", poses}, {"jacobians", jacobians}};
+  if(o.com) v["fn_center_of_mass"] = centerOfMassQBody(rm).text;
+  if(o.momentum) v["fn_centroidal_momentum"] = centroidalMomentumBody(rm).text;
+  if(o.energy)
+  {
+    v["fn_kinetic_energy"] = energyBody(rm, fx, true).text;
+    v["kinetic_doc"] = fx.hasArmature() ? "alpha^T (H + diag(armature)) alpha / 2" : "alpha^T H alpha / 2";
+    v["potential_doc"] = potential ? " + potential_energy" : "";
+    v["potential_call"] = potential ? " + potential_energy<S>(q)" : "";
+  }
+  if(potential) v["fn_potential_energy"] = energyBody(rm, fx, false).text;
+  return fill("scene_outputs.hpp.in", {{"com", o.com}, {"momentum", o.momentum}, {"energy", o.energy}, {"potential", potential}},
+              v);
+}
+
+const char * integratorDoc(rbd::scene::Integrator i)
+{
+  switch(i)
+  {
+    case rbd::scene::Integrator::SemiImplicitEuler: return "semi-implicit Euler";
+    case rbd::scene::Integrator::ExplicitEuler: return "explicit Euler";
+    case rbd::scene::Integrator::RK4: return "classical Runge-Kutta 4";
+  }
+  return "";
+}
+
+} // namespace
+
+SceneEffects sceneEffects(const RobotModel & rm, const rbd::scene::Scene & scene, const rbd::scene::SceneRobot & sr)
+{
+  SceneEffects fx;
+  fx.gravity = scene.gravity;
+  if(fx.gravity && fx.gravity->isZero()) fx.gravity.reset(); // a zero vector is no gravity
+  fx.velocityTerms = scene.velocityTerms;
+  auto toStd = [&](const Eigen::VectorXd & v) {
+    if(v.size() != rm.nv) throw std::logic_error("scene robot: per-dof effects do not match the model");
+    return std::vector<double>(v.data(), v.data() + v.size());
+  };
+  fx.damping = toStd(sr.damping);
+  fx.friction = toStd(sr.friction);
+  fx.armature = toStd(sr.armature);
+  fx.frictionVelocity = scene.frictionVelocity;
+  fx.wrenchBodies = sr.wrenchBodies;
+  for(std::size_t c = 0; c < scene.contacts.size(); ++c)
+    fx.contacts.push_back(SceneContact{scene.contacts[c].name, sr.contactBodies[c], scene.contacts[c].point});
+  fx.stiffness = scene.contactModel.stiffness;
+  fx.contactDamping = scene.contactModel.damping;
+  fx.mu = scene.contactModel.mu;
+  fx.slipVelocity = scene.contactModel.slipVelocity;
+  fx.groundHeight = scene.contactModel.groundHeight;
+  return fx;
+}
+
+std::vector<std::string> unregularisedMasslessJoints(const RobotModel & rm, const SceneEffects & fx)
+{
+  std::vector<std::string> out;
+  for(const std::string & name : rm.masslessSubtrees)
+    for(const MovingJoint & mj : rm.joints)
+    {
+      if(mj.name != name) continue;
+      bool regular = true;
+      for(int d = 0; d < mj.nv; ++d)
+      {
+        const auto i = static_cast<std::size_t>(mj.vIndex + d);
+        regular = regular && i < fx.armature.size() && fx.armature[i] > 0.0;
+      }
+      if(!regular) out.push_back(name);
+    }
+  return out;
+}
+
+std::string describeEffects(const rbd::scene::Scene & scene, const SceneEffects & fx)
+{
+  // Enabled effects only: a disabled one is not named anywhere in the header.
+  std::vector<std::string> e;
+  if(fx.gravity) e.push_back(fmt::format("gravity ({}, {}, {})", (*fx.gravity)[0], (*fx.gravity)[1], (*fx.gravity)[2]));
+  if(fx.velocityTerms) e.push_back("velocity terms (Coriolis, centrifugal)");
+  if(fx.hasDamping()) e.push_back(fmt::format("damping on {} dofs", countNonZero(fx.damping)));
+  if(fx.hasFriction()) e.push_back(fmt::format("Coulomb friction on {} dofs (v_s {})", countNonZero(fx.friction), fx.frictionVelocity));
+  if(fx.hasArmature()) e.push_back(fmt::format("armature on {} dofs", countNonZero(fx.armature)));
+  if(!scene.locked.empty()) e.push_back(fmt::format("{} locked joints", scene.locked.size()));
+  if(!scene.externalWrenches.empty()) e.push_back(fmt::format("external wrenches on {}", quoted(scene.externalWrenches)));
+  if(!fx.contacts.empty())
+    e.push_back(fmt::format("{} contacts (k {}, c {}, mu {}, v_slip {}, ground z {})", fx.contacts.size(), fx.stiffness,
+                            fx.contactDamping, fx.mu, fx.slipVelocity, fx.groundHeight));
+  if(e.empty()) e.push_back("none (inertia only)");
+  std::string s;
+  for(const auto & x : e) s += (s.empty() ? "" : "; ") + x;
+  return s;
+}
+
+std::string noForwardDynamicsNote(const std::vector<std::string> & joints)
+{
+  std::string names;
+  for(const auto & j : joints) names += (names.empty() ? "'" : ", '") + j + "'";
+  return fmt::format("// No forward dynamics: joint(s) {} move only massless links, so the mass matrix is singular\n"
+                     "// at every configuration. Fix: give those links an <inertial> with mass in the URDF, lock the\n"
+                     "// joints in a scene, or give each of them armature > 0 in a scene.",
+                     names);
+}
+
+std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & scene, const rbd::scene::SceneRobot & sr,
+                            const std::string & ns, const std::string & provenance)
+{
+  const SceneEffects fx = sceneEffects(rm, scene, sr);
+  const bool gravity = fx.gravity.has_value(), velocity = fx.velocityTerms;
+  const bool wrenches = !fx.wrenchBodies.empty(), contacts = !fx.contacts.empty();
+  const bool genBias = gravity || velocity || wrenches || contacts || fx.hasDamping() || fx.hasFriction();
+  const std::vector<std::string> singular = unregularisedMasslessJoints(rm, fx);
+  const bool fd = singular.empty();
+  const JointLines J = jointLines(rm);
+  const bool rk4 = scene.integrator == rbd::scene::Integrator::RK4;
+
+  std::map<std::string, bool> flags{
+      {"gravity", gravity},
+      {"velocity", velocity},
+      {"bias", gravity || velocity},
+      {"wrenches", wrenches},
+      {"contacts", contacts},
+      {"generalized_bias", genBias},
+      {"forward_dynamics", fd},
+      {"no_forward_dynamics", !fd},
+      {"quaternion", J.free || J.spherical},
+      {"free", J.free},
+      {"planar", J.planar},
+      {"rk4", rk4},
+      {"semi_implicit_euler", scene.integrator == rbd::scene::Integrator::SemiImplicitEuler},
+      {"explicit_euler", scene.integrator == rbd::scene::Integrator::ExplicitEuler},
+  };
+  std::map<std::string, std::string> v;
+  v["provenance"] = provenance;
+  v["namespace"] = ns;
+  v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
+  v["nq"] = std::to_string(rm.nq);
+  v["nv"] = std::to_string(rm.nv);
+  v["nbodies"] = std::to_string(rm.bodies.size());
+  std::string bodyEnum;
+  std::vector<std::string> bodyNames;
+  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
+  {
+    bodyEnum += fmt::format("  {} = {},{}", rm.bodies[i].ident, i, i + 1 < rm.bodies.size() ? "\n" : "");
+    bodyNames.push_back(rm.bodies[i].name);
+  }
+  v["body_enum"] = bodyEnum;
+  v["body_names"] = quoted(bodyNames);
+  v["dof_names"] = quoted(rm.dofNames);
+  v["has_forward_dynamics"] = fd ? "true" : "false";
+  v["initial_state"] = initialStateLines(scene, sr);
+  v["wrench_param"] = wrenches ? ", [[maybe_unused]] const Wrenches<S> & wrenches" : "";
+  if(gravity) v["gravity"] = fmt::format("{:.17g}, {:.17g}, {:.17g}", (*fx.gravity)[0], (*fx.gravity)[1], (*fx.gravity)[2]);
+  if(wrenches)
+  {
+    std::string wb;
+    for(int b : fx.wrenchBodies) wb += (wb.empty() ? "Body::" : ", Body::") + rm.bodies[static_cast<std::size_t>(b)].ident;
+    v["nwrenches"] = std::to_string(fx.wrenchBodies.size());
+    v["wrench_bodies"] = wb;
+  }
+  if(contacts)
+  {
+    std::vector<std::string> names;
+    for(const auto & c : fx.contacts) names.push_back(c.name);
+    v["ncontacts"] = std::to_string(fx.contacts.size());
+    v["contact_names"] = quoted(names);
+    v["ground_height"] = fmt::format("{}", fx.groundHeight);
+    v["contact_model"] = fmt::format("k = {} N/m, c = {} N s/m, mu = {}, slip velocity {} m/s", fx.stiffness,
+                                     fx.contactDamping, fx.mu, fx.slipVelocity);
+    v["fn_contact_forces"] = contactForcesBody(rm, fx).text;
+  }
+  v["armature_doc"] = fx.hasArmature() ? " + diag(armature)" : "";
+  const std::string M = fx.hasArmature() ? "(H + diag(armature))" : "H";
+  v["equation_doc"] = genBias ? M + " alphaD = tau - generalized_bias(q, alpha" + std::string(wrenches ? ", wrenches" : "") + ")"
+                              : M + " alphaD = tau";
+  if(fd)
+    v["fd_doc"] = "composite rigid-body algorithm for " + M + (genBias ? ", generalized_bias" : "") +
+                ", tree-sparse L^T D L factorisation";
+  v["fn_mass_matrix"] = massMatrixBody(rm, fx.armature).text;
+  const Eigen::Vector3d g = gravity ? *fx.gravity : Eigen::Vector3d::Zero();
+  if(gravity) v["fn_gravity_torques"] = rneaBody(rm, {false, false, true, false, g}).text;
+  if(velocity) v["fn_velocity_torques"] = rneaBody(rm, {true, false, false, false, g}).text;
+  if(gravity || velocity)
+  {
+    v["fn_nonlinear_effects"] = rneaBody(rm, {velocity, false, gravity, false, g}).text;
+    v["bias_doc"] = gravity && velocity ? "gravity, Coriolis and centrifugal torques" : (gravity ? "gravity torques" : "Coriolis and centrifugal torques");
+  }
+  v["fn_inverse_dynamics"] = sceneRneaBody(rm, fx, true).text;
+  const std::string wrenchArg = wrenches ? ", wrenches" : "";
+  if(genBias)
+  {
+    std::vector<std::string> terms;
+    if(gravity || velocity) terms.push_back("nonlinear_effects");
+    if(fx.hasDamping()) terms.push_back("damping alpha");
+    if(fx.hasFriction()) terms.push_back("friction alpha / sqrt(alpha^2 + v_s^2)");
+    if(contacts) terms.push_back("- J_c^T contact_forces");
+    if(wrenches) terms.push_back("- J_w^T wrenches");
+    std::string doc;
+    for(const auto & t : terms) doc += (doc.empty() ? "" : (t[0] == '-' ? " " : " + ")) + t;
+    v["generalized_bias_doc"] = doc;
+    v["fn_generalized_bias"] = sceneRneaBody(rm, fx, false).text;
+  }
+  if(fd)
+  {
+    FdOptions fo;
+    fo.biasCall = genBias ? "generalized_bias<S>(q, alpha" + wrenchArg + ")" : "";
+    fo.armature = fx.armature;
+    v["fn_forward_dynamics"] = forwardDynamicsBody(rm, fo).text;
+    v["integrate"] = J.integrate;
+    v["wrench_arg"] = wrenchArg;
+    v["wrench_doc"] = wrenches ? " and the wrenches" : "";
+    v["integrator_doc"] = integratorDoc(scene.integrator);
+    if(rk4)
+    {
+      v["configuration_derivative"] = J.derivative;
+      v["normalize_quaternions"] = J.normalize;
+    }
+  }
+  else v["no_forward_dynamics_note"] = noForwardDynamicsNote(singular);
+  v["outputs"] = outputs(rm, scene, fx);
+  return fill("scene_dynamics.hpp.in", flags, v);
+}
+
+} // namespace rbdgen::emit

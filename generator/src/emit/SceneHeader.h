@@ -1,0 +1,35 @@
+#pragma once
+// The header of a scene: the plain API specialised to the scene's effects (SceneEffects.h), its
+// outputs and step(), from templates/scene_*.hpp.in.
+
+#include <string>
+#include <vector>
+
+#include <rbd/scene/SceneLoader.h>
+
+#include "../model/RobotModel.h"
+#include "SceneEffects.h"
+
+namespace rbdgen::emit
+{
+
+/// The effects of a scene on the model built from sceneRobot.robot.
+SceneEffects sceneEffects(const RobotModel & rm, const rbd::scene::Scene & scene,
+                          const rbd::scene::SceneRobot & sceneRobot);
+
+/// Joints whose subtree is massless and that the scene does not regularise with armature > 0 on
+/// every dof: H + diag(armature) is singular when this is not empty.
+std::vector<std::string> unregularisedMasslessJoints(const RobotModel & rm, const SceneEffects & fx);
+
+/// "gravity (0, 0, -9.81); velocity terms; damping on 3 dofs; ..." (provenance).
+std::string describeEffects(const rbd::scene::Scene & scene, const SceneEffects & fx);
+
+/// The comment that replaces forward dynamics when the mass matrix is singular.
+std::string noForwardDynamicsNote(const std::vector<std::string> & joints);
+
+/// The whole header text; provenance: the lines that open it (comments).
+std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & scene,
+                            const rbd::scene::SceneRobot & sceneRobot, const std::string & ns,
+                            const std::string & provenance);
+
+} // namespace rbdgen::emit

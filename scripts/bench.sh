@@ -1,0 +1,128 @@
+#!/usr/bin/env bash
+# Benchmark the generated code against the runtime, KDL and MuJoCo (issue 4), g++ and clang++.
+#
+#   scripts/bench.sh [--quick] [--robots "ur5e panda"] [--build-dir DIR] [--no-callgrind] [--no-compile-time]
+#
+# Installs what is missing (scripts/install-deps.sh + clang, valgrind, KDL, kdl_parser, MuJoCo),
+# configures DIR/gcc and DIR/clang (default DIR: build-bench) with -DRBDGEN_BUILD_BENCH=ON
+# -DRBDGEN_BUILD_TESTS=OFF -march=native, builds, runs every bench_<robot> (the g++ build: all
+# implementations; the clang++ build: the generated code only), the cost model (bench_costs),
+# callgrind instruction counts and the compile time of talos_reduced's header, then writes
+#   bench/results/<date>-<cpu>.md, .csv, bench/results/latest.md (and prints the table).
+# Exit status: non-zero if a build fails or an implementation disagrees with the runtime.
+# --quick: one repetition, short runs, no callgrind, no compile time (a smoke run).
+set -euo pipefail
+repo="$(cd "$(dirname "$0")/.." && pwd)"
+build="$repo/build-bench"
+robots=""
+quick=0
+callgrind=1
+compile_time=1
+repetitions=3
+min_time=0.05
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) quick=1; callgrind=0; compile_time=0; repetitions=1; min_time=0.01 ;;
+    --robots) robots="$2"; shift ;;
+    --build-dir) build="$2"; shift ;;
+    --no-callgrind) callgrind=0 ;;
+    --no-compile-time) compile_time=0 ;;
+    -h|--help) sed -n 2,14p "$0"; exit 0 ;;
+    *) echo "bench.sh: unknown argument '$1'" >&2; exit 2 ;;
+  esac
+  shift
+done
+
+"$repo/scripts/install-deps.sh" clang valgrind liborocos-kdl-dev libkdl-parser-dev libmujoco-dev python3
+
+jobs="$(nproc)"
+only=()
+[ -n "$robots" ] && only=("-DRBDGEN_BENCH_ONLY=${robots// /;}")
+for cc in gcc clang; do
+  if [ $cc = gcc ]; then cxx=g++; else cxx=clang++; fi
+  # -Werror off: g++ 12 gives false -Warray-bounds / -Wmaybe-uninitialized in Eigen with AVX-512.
+  cmake -S "$repo" -B "$build/$cc" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=$cxx \
+        -DCMAKE_CXX_FLAGS=-march=native -DRBDGEN_BUILD_BENCH=ON -DRBDGEN_BUILD_TESTS=OFF -DRBDGEN_WERROR=OFF \
+        "${only[@]}" >/dev/null
+  ninja -C "$build/$cc" -j"$jobs" bench_all
+done
+
+raw="$build/raw"
+rm -rf "$raw"
+mkdir -p "$raw"
+status=0
+mapfile -t entries < "$build/gcc/bench/robots.txt"
+for entry in "${entries[@]}"; do
+  name="${entry%%=*}"
+  for cc in gcc clang; do
+    filter=()
+    [ $cc = clang ] && filter=(--benchmark_filter=/gen_)
+    echo "== $name ($cc)" >&2
+    "$build/$cc/bench/bench_$name" "${filter[@]}" --benchmark_repetitions=$repetitions \
+      --benchmark_report_aggregates_only=true --benchmark_min_time=$min_time \
+      --benchmark_out="$raw/${cc}_$name.json" --benchmark_out_format=json >"$raw/${cc}_$name.txt" || status=1
+    grep '^check ' "$raw/${cc}_$name.txt" | grep -v ' ok ' >&2 || true
+  done
+done
+
+"$build/gcc/bench/bench_costs" "${entries[@]}" > "$raw/costs.csv"
+
+if [ $callgrind = 1 ]; then
+  echo "robot,algo,instructions" > "$raw/callgrind.csv"
+  for entry in "${entries[@]}"; do
+    name="${entry%%=*}"
+    body="$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["context"]["jacobian_body"])' "$raw/gcc_$name.json")"
+    out="$raw/callgrind_$name"
+    mkdir -p "$out"
+    n=32
+    valgrind --tool=callgrind --callgrind-out-file="$out/cg.out" "$build/gcc/bench/callgrind_$name" $n "$body" 2>/dev/null
+    # each dump: "desc: Trigger: Client Request: <algo>:<count>" ... "totals: <Ir>"
+    python3 - "$name" "$n" "$out" >> "$raw/callgrind.csv" <<'PY'
+import glob, re, sys
+name, n, out = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+ir = {}
+for path in glob.glob(out + "/cg.out*"):
+    text = open(path).read()
+    m = re.search(r"Client Request: (\w+):(\d+)", text)
+    t = re.search(r"^(?:totals|summary): (\d+)", text, re.M)
+    if m and t:
+        ir[(m.group(1), int(m.group(2)))] = int(t.group(1))
+for (algo, count), v in sorted(ir.items()):
+    if count == n and (algo, 2 * n) in ir:
+        print(f"{name},{algo},{(ir[(algo, 2 * n)] - v) / n:.0f}")
+PY
+  done
+fi
+
+cpu="$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')"
+date_iso="$(date -u +%Y-%m-%d)"
+{
+  echo "cpu=$cpu"
+  echo "cores=$(nproc)"
+  echo "date=$date_iso $(date -u +%H:%M) UTC"
+  echo "gcc=$(g++ --version | head -1)"
+  echo "clang=$(clang++ --version | head -1)"
+  echo "peers=KDL $(dpkg-query -W -f='${Version}' liborocos-kdl-dev 2>/dev/null) (kdl_parser $(dpkg-query -W -f='${Version}' libkdl-parser-dev 2>/dev/null)), MuJoCo $(dpkg-query -W -f='${Version}' libmujoco-dev 2>/dev/null) (Debian packages)"
+  echo "repetitions=$repetitions"
+  echo "min_time=$min_time"
+} > "$raw/meta.txt"
+
+if [ $compile_time = 1 ] && [ -f "$build/gcc/bench/instantiate_talos_reduced.cpp" ]; then
+  # One compiler process (one core): every function of the talos_reduced header for double.
+  for cc in gcc clang; do
+    if [ $cc = gcc ]; then cxx=g++; else cxx=clang++; fi
+    s=$( { /usr/bin/time -f %e $cxx -std=c++17 -O3 -march=native -DNDEBUG -isystem /usr/include/eigen3 \
+             -I"$build/$cc/bench/bench_gen_talos_reduced" -c "$build/$cc/bench/instantiate_talos_reduced.cpp" \
+             -o /dev/null; } 2>&1 | tail -1)
+    echo "compile_$cc=$s" >> "$raw/meta.txt"
+  done
+  echo "compile_what=talos_reduced (floating, nv $(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["context"]["nv"])' "$raw/gcc_talos_reduced.json")): every function of the header instantiated for double, -O3 -march=native, one compiler process" >> "$raw/meta.txt"
+fi
+
+results="$repo/bench/results"
+mkdir -p "$results"
+slug="$(echo "$cpu" | tr -c 'A-Za-z0-9\n' '-' | sed 's/--*/-/g; s/-$//')"
+python3 "$repo/bench/tools/merge_results.py" --raw "$raw" --md "$results/$date_iso-$slug.md" --csv "$results/$date_iso-$slug.csv"
+cp "$results/$date_iso-$slug.md" "$results/latest.md"
+echo "bench.sh: wrote $results/$date_iso-$slug.md (+ .csv, latest.md)" >&2
+exit $status

@@ -1,0 +1,44 @@
+#pragma once
+// A scene-specialised generated header seen through plain function pointers (double), so one test
+// program checks every scene; each header is compiled once, in its own adapter translation unit
+// (-Wall -Wextra -Wpedantic -Wshadow -Werror -fno-exceptions -fno-rtti, double and float).
+// A function the scene does not call for is a null pointer. Matrices are column-major; a pose is
+// 12 values (rotation row-major, then translation); wrenches: 6 per scene wrench, [n; f].
+
+namespace scenegentest
+{
+
+struct SceneAdapter
+{
+  const char * name;
+  const char * sceneFile;
+  const char * headerPath;
+  int nq, nv, nwrenches, ncontacts;
+  bool hasForwardDynamics;
+  void (*massMatrix)(const double * q, double * H);
+  void (*inverseDynamics)(const double * q, const double * alpha, const double * alphaD, const double * w, double * tau);
+  void (*forwardDynamics)(const double * q, const double * alpha, const double * tau, const double * w, double * alphaD);
+  void (*generalizedBias)(const double * q, const double * alpha, const double * w, double * out);
+  void (*gravityTorques)(const double * q, double * out);
+  void (*velocityTorques)(const double * q, const double * alpha, double * out);
+  void (*nonlinearEffects)(const double * q, const double * alpha, double * out);
+  void (*contactForces)(const double * q, const double * alpha, double * out); ///< 3 per contact
+  void (*step)(double * q, double * alpha, const double * tau, double dt, const double * w);
+  void (*integrate)(const double * q, const double * dq, double * out);
+  void (*initialState)(double * q, double * alpha);
+  int nposes;
+  const char * const * poseLinks;
+  void (*pose)(int i, const double * q, double * out);
+  int njacobians;
+  const char * const * jacobianLinks;
+  void (*jacobian)(int i, const double * q, double * J);
+  void (*centerOfMass)(const double * q, double * out);
+  void (*centroidalMomentum)(const double * q, const double * alpha, double * out);
+  void (*kineticEnergy)(const double * q, const double * alpha, double * out);
+  void (*potentialEnergy)(const double * q, double * out);
+  void (*energy)(const double * q, const double * alpha, double * out);
+  /// Every float function once at the initial state with random-ish inputs: all results finite.
+  bool (*floatFinite)();
+};
+
+} // namespace scenegentest

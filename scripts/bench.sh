@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Benchmark the generated code against the runtime, KDL and MuJoCo (issue 4), g++ and clang++.
 #
-#   scripts/bench.sh [--quick] [--robots "ur5e panda"] [--build-dir DIR] [--no-callgrind] [--no-compile-time]
+#   scripts/bench.sh [--quick] [--robots "ur5e panda"] [--build-dir DIR] [--no-callgrind] [--no-compile-time] [--no-build]
+#   (BENCH_GCC_DIR / BENCH_CLANG_DIR override DIR/gcc and DIR/clang)
 #
 # Installs what is missing (scripts/install-deps.sh + clang, valgrind, KDL, kdl_parser, MuJoCo),
 # configures DIR/gcc and DIR/clang (default DIR: build-bench) with -DRBDGEN_BUILD_BENCH=ON
@@ -18,6 +19,7 @@ robots=""
 quick=0
 callgrind=1
 compile_time=1
+build_step=1
 repetitions=3
 min_time=0.05
 while [ $# -gt 0 ]; do
@@ -27,7 +29,8 @@ while [ $# -gt 0 ]; do
     --build-dir) build="$2"; shift ;;
     --no-callgrind) callgrind=0 ;;
     --no-compile-time) compile_time=0 ;;
-    -h|--help) sed -n 2,14p "$0"; exit 0 ;;
+    --no-build) build_step=0 ;;
+    -h|--help) sed -n 2,15p "$0"; exit 0 ;;
     *) echo "bench.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
   shift
@@ -38,34 +41,42 @@ done
 jobs="$(nproc)"
 only=()
 [ -n "$robots" ] && only=("-DRBDGEN_BENCH_ONLY=${robots// /;}")
+declare -A dir=([gcc]="${BENCH_GCC_DIR:-$build/gcc}" [clang]="${BENCH_CLANG_DIR:-$build/clang}")
 for cc in gcc clang; do
-  if [ $cc = gcc ]; then cxx=g++; else cxx=clang++; fi
+  if [ $cc = gcc ]; then cxx=g++; targets=bench_all; else cxx=clang++; targets=bench_programs; fi
+  compiler=()
+  [ -f "${dir[$cc]}/CMakeCache.txt" ] || compiler=(-DCMAKE_CXX_COMPILER=$cxx) # set once: changing it wipes the cache
   # -Werror off: g++ 12 gives false -Warray-bounds / -Wmaybe-uninitialized in Eigen with AVX-512.
-  cmake -S "$repo" -B "$build/$cc" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=$cxx \
+  cmake -S "$repo" -B "${dir[$cc]}" -G Ninja -DCMAKE_BUILD_TYPE=Release "${compiler[@]}" \
         -DCMAKE_CXX_FLAGS=-march=native -DRBDGEN_BUILD_BENCH=ON -DRBDGEN_BUILD_TESTS=OFF -DRBDGEN_WERROR=OFF \
         "${only[@]}" >/dev/null
-  ninja -C "$build/$cc" -j"$jobs" bench_all
+  if [ $build_step = 1 ]; then ninja -C "${dir[$cc]}" -j"$jobs" $targets; fi
 done
 
 raw="$build/raw"
 rm -rf "$raw"
 mkdir -p "$raw"
 status=0
-mapfile -t entries < "$build/gcc/bench/robots.txt"
+mapfile -t entries < "${dir[gcc]}/bench/robots.txt"
 for entry in "${entries[@]}"; do
   name="${entry%%=*}"
   for cc in gcc clang; do
     filter=()
     [ $cc = clang ] && filter=(--benchmark_filter=/gen_)
     echo "== $name ($cc)" >&2
-    "$build/$cc/bench/bench_$name" "${filter[@]}" --benchmark_repetitions=$repetitions \
+    "${dir[$cc]}/bench/bench_$name" "${filter[@]}" --benchmark_repetitions=$repetitions \
       --benchmark_report_aggregates_only=true --benchmark_min_time=$min_time \
       --benchmark_out="$raw/${cc}_$name.json" --benchmark_out_format=json >"$raw/${cc}_$name.txt" || status=1
     grep '^check ' "$raw/${cc}_$name.txt" | grep -v ' ok ' >&2 || true
   done
 done
 
-"$build/gcc/bench/bench_costs" "${entries[@]}" > "$raw/costs.csv"
+"${dir[gcc]}/bench/bench_costs" "${entries[@]}" > "$raw/costs.csv"
+
+# Cost of each scene effect (quadruped; a disabled effect must cost nothing): its own table.
+echo "== scene effects (gcc)" >&2
+"${dir[gcc]}/bench/bench_scene_effects" --benchmark_repetitions=$repetitions --benchmark_report_aggregates_only=true \
+  --benchmark_min_time=$min_time > "$raw/scene_effects.txt" || status=1
 
 if [ $callgrind = 1 ]; then
   echo "robot,algo,instructions" > "$raw/callgrind.csv"
@@ -75,7 +86,7 @@ if [ $callgrind = 1 ]; then
     out="$raw/callgrind_$name"
     mkdir -p "$out"
     n=32
-    valgrind --tool=callgrind --callgrind-out-file="$out/cg.out" "$build/gcc/bench/callgrind_$name" $n "$body" 2>/dev/null
+    valgrind --tool=callgrind --callgrind-out-file="$out/cg.out" "${dir[gcc]}/bench/callgrind_$name" $n "$body" 2>/dev/null
     # each dump: "desc: Trigger: Client Request: <algo>:<count>" ... "totals: <Ir>"
     python3 - "$name" "$n" "$out" >> "$raw/callgrind.csv" <<'PY'
 import glob, re, sys
@@ -107,12 +118,12 @@ date_iso="$(date -u +%Y-%m-%d)"
   echo "min_time=$min_time"
 } > "$raw/meta.txt"
 
-if [ $compile_time = 1 ] && [ -f "$build/gcc/bench/instantiate_talos_reduced.cpp" ]; then
+if [ $compile_time = 1 ] && [ -f "${dir[gcc]}/bench/instantiate_talos_reduced.cpp" ]; then
   # One compiler process (one core): every function of the talos_reduced header for double.
   for cc in gcc clang; do
     if [ $cc = gcc ]; then cxx=g++; else cxx=clang++; fi
     s=$( { /usr/bin/time -f %e $cxx -std=c++17 -O3 -march=native -DNDEBUG -isystem /usr/include/eigen3 \
-             -I"$build/$cc/bench/bench_gen_talos_reduced" -c "$build/$cc/bench/instantiate_talos_reduced.cpp" \
+             -I"${dir[$cc]}/bench/bench_gen_talos_reduced" -c "${dir[$cc]}/bench/instantiate_talos_reduced.cpp" \
              -o /dev/null; } 2>&1 | tail -1)
     echo "compile_$cc=$s" >> "$raw/meta.txt"
   done
@@ -124,5 +135,7 @@ mkdir -p "$results"
 slug="$(echo "$cpu" | tr -c 'A-Za-z0-9\n' '-' | sed 's/--*/-/g; s/-$//')"
 python3 "$repo/bench/tools/merge_results.py" --raw "$raw" --md "$results/$date_iso-$slug.md" --csv "$results/$date_iso-$slug.csv"
 cp "$results/$date_iso-$slug.md" "$results/latest.md"
+cp "$raw/scene_effects.txt" "$results/$date_iso-$slug-scene-effects.txt"
+cp "$raw/scene_effects.txt" "$results/latest-scene-effects.txt"
 echo "bench.sh: wrote $results/$date_iso-$slug.md (+ .csv, latest.md)" >&2
 exit $status

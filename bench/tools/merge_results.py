@@ -169,7 +169,12 @@ def main():
                 else:
                     any_check = True
                     err, status = v.split(" ")[:2]
-                    cells.append(err if status == "ok" else f"**{err} DISAGREES**")
+                    if status == "ok":
+                        cells.append(err)
+                    elif status.startswith("DIFFERS"):
+                        cells.append(f"{err} (model changed: not timed)")
+                    else:
+                        cells.append(f"**{err} DISAGREES: not timed**")
             if any_check:
                 out.append(f"| {robot} | {impl} | " + " | ".join(cells) + " |")
 
@@ -185,7 +190,7 @@ def main():
         out.append("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|")
         for robot in robots:
             for algo in ALGOS:
-                c = costs.get((robot, algo)) or (costs.get((robot, "fd_crba" if "CRBA" in contexts.get(robot, {}).get("fd_algorithm", "") else "fd_aba")) if algo == "fd" else None)
+                c = costs.get((robot, algo)) or (costs.get((robot, "fd_crba" if contexts.get(robot, {}).get("fd_algorithm", "").startswith("CRBA") else "fd_aba")) if algo == "fd" else None)
                 if not c:
                     continue
                 fm, fa = c["feather_mults"], c["feather_adds"]

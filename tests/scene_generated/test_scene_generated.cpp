@@ -69,7 +69,8 @@ struct Reference
 };
 
 /// A random state (unit quaternions); with contacts, the free root's height is moved so that the
-/// lowest contact point sits within +-1 cm of the ground (some points in contact, some not).
+/// lowest contact point sits between 3 cm below and 1 cm above the ground (some points in contact,
+/// some not).
 struct State
 {
   Vec q, alpha, alphaD, tau, w;
@@ -87,7 +88,7 @@ State randomState(rbdtest::Rng & rng, const Reference & ref, const SceneAdapter 
   {
     double lowest = 1e9;
     for(const auto & p : ref.dyn.contactPositions(s.q)) lowest = std::min(lowest, p.z());
-    s.q[6] += ref.scene.contactModel.groundHeight - lowest + rbdtest::uniform(rng, -0.01, 0.01);
+    s.q[6] += ref.scene.contactModel.groundHeight - lowest + rbdtest::uniform(rng, -0.03, 0.01);
   }
   return s;
 }
@@ -288,7 +289,9 @@ TEST_P(SceneGenerated, StepAndIntegration)
   if(!g().step) GTEST_SKIP() << "no forward dynamics in this scene (checked by PresenceMatchesTheScene)";
   Reference ref(g());
   rbdtest::Rng rng(3);
-  const double dt = ref.scene.dt;
+  // Stiff contacts from random leg states diverge at dt = 1 ms in both implementations (omega dt > 2
+  // for a light foot on k = 2e4 N/m): with contacts the steps are 0.1 ms.
+  const double dt = g().ncontacts > 0 ? std::min(ref.scene.dt, 1e-4) : ref.scene.dt;
   Log l1{"step x1"}, l100{"step x100"}, lI{"integrate"}, l0{"initial_state"};
   {
     Vec q(g().nq), a(g().nv);

@@ -113,10 +113,11 @@ TEST(EnergyDrift, SevenLinkChainRk4Over10Seconds)
   std::printf("[ 7-link chain RK4 10 s       ] relative energy drift: h = 1e-3: %.3g, h = 5e-4: %.3g, ratio %.1f\n",
               coarse.maxDrift, fine.maxDrift, coarse.maxDrift / fine.maxDrift);
   // The proof is the order: a drift of C T h^4 divides by 16 when h halves (rounding, ~1e-13
-  // relative over 2e4 steps, is far below); accepted 12 .. 24 (a 2nd-order error would give 4).
+  // relative over 2e4 steps, is far below). At h = 1e-3 the fast modes are not yet asymptotic
+  // (measured ratio 22.5; 52 for 2e-3 -> 1e-3), so accepted 12 .. 32; a 2nd-order error gives 4.
   EXPECT_GE(coarse.maxDrift / fine.maxDrift, 12.0);
-  EXPECT_LE(coarse.maxDrift / fine.maxDrift, 24.0);
-  // Absolute regression bound at h = 5e-4: 1e-4 of the peak kinetic energy (measured ~1e-5).
+  EXPECT_LE(coarse.maxDrift / fine.maxDrift, 32.0);
+  // Absolute regression bound at h = 5e-4: 1e-4 of the peak kinetic energy (measured 2.8e-6).
   EXPECT_LE(fine.maxDrift, 1e-4);
 }
 

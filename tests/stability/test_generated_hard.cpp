@@ -102,6 +102,8 @@ protected:
     ASSERT_EQ(robot_.mb.nrDof(), g().nv);
     ASSERT_EQ(robot_.mb.nrBodies(), g().nbodies);
     for(int i = 0; i < g().nbodies; ++i) ASSERT_EQ(robot_.mb.body(i).name(), g().bodyNames[i]);
+    // Every hard model has a regular mass matrix (massless links only where mass lies beyond).
+    ASSERT_TRUE(g().hasForwardDynamics) << g().name;
     mbL_ = dyntest::castModel<LD>(robot_.mb);
   }
 

@@ -3,9 +3,12 @@
 #   -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fsanitize=fuzzer-no-link
 # so that one instrumented build serves both stages:
 #   (a) sanitizers: the test suite under AddressSanitizer + UndefinedBehaviorSanitizer (ctest). Subset,
-#       for the CI budget: every test executable except test_generated (26 robots, 10+ min to compile
-#       even at -O1) and the install tests (they install and build outside projects); generated code
-#       still runs under the sanitizers in test_stability_generated, test_scene_generated and test_cli;
+#       for the CI budget (30 min on 2 cores, the Release build and tests take ~18): the runtime, loader,
+#       scene, codegen, CLI and runtime-stability tests, i.e. everything but the tests that compile
+#       generated headers at -O1 (test_generated, test_scene_generated, test_stability_generated,
+#       test_accuracy) and the install tests; the generator itself runs sanitized in test_cli,
+#       test_scene_emit, test_simulate_cli and under the fuzzer. Warnings are checked by the main
+#       (g++, -Werror) build; clang's -Wpedantic flags GoogleTest's typed-test macros, so no -Werror here;
 #   (b) fuzz: fuzz/fuzz_urdf (libFuzzer) on URDF -> model -> header for RBDGEN_FUZZ_SECONDS (default
 #       60) from the seed corpus fuzz/corpus; any crash, sanitizer report or leak fails the stage (the
 #       input is kept in <prefix>-san/artifacts/ and belongs in tests/cli/bad afterwards).
@@ -26,8 +29,10 @@ start=$SECONDS
 echo "=== ci-extra: sanitizer build ==="
 cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link $san_flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DRBDGEN_BUILD_FUZZ=ON -DRBDGEN_BUILD_TESTS=ON
-targets=$(cmake --build "$dir" --target help | sed -n 's/^\(test_[A-Za-z0-9_]*\): .*/\1/p' | grep -v '^test_generated$' | sort -u)
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DRBDGEN_BUILD_FUZZ=ON -DRBDGEN_BUILD_TESTS=ON \
+  -DRBDGEN_WERROR=OFF
+skip='^(test_generated|test_scene_generated|test_stability_generated|test_accuracy)$'
+targets=$(cmake --build "$dir" --target help | sed -n 's/^\(test_[A-Za-z0-9_]*\): .*/\1/p' | grep -Ev "$skip" | sort -u)
 # shellcheck disable=SC2086
 cmake --build "$dir" --parallel "$jobs" --target rbdgen fuzz_urdf $targets
 echo "=== ci-extra: sanitizer build done in $((SECONDS - start)) s ==="

@@ -205,6 +205,7 @@ public:
     checkSixRows(M);
     Eigen::Matrix<T, 6, Derived::ColsAtCompileTime> res;
     res.resize(6, M.cols());
+    if(M.cols() == 0) return res; // Eigen offsets a null pointer for blocks of an empty matrix (UBSan)
     const Eigen::Matrix<T, 3, Derived::ColsAtCompileTime> top = M.template topRows<3>();
     const Eigen::Matrix<T, 3, Derived::ColsAtCompileTime> lin =
         M.template bottomRows<3>() - vector3ToCrossMatrix(r_) * top;
@@ -227,6 +228,7 @@ public:
     checkSixRows(M);
     Eigen::Matrix<T, 6, Derived::ColsAtCompileTime> res;
     res.resize(6, M.cols());
+    if(M.cols() == 0) return res; // Eigen offsets a null pointer for blocks of an empty matrix (UBSan)
     res.template topRows<3>().noalias() = E_.transpose() * M.template topRows<3>();
     res.template bottomRows<3>().noalias() = E_.transpose() * M.template bottomRows<3>();
     res.template bottomRows<3>().noalias() += vector3ToCrossMatrix(r_) * res.template topRows<3>();
@@ -240,6 +242,7 @@ public:
     checkSixRows(M);
     Eigen::Matrix<T, 6, Derived::ColsAtCompileTime> res;
     res.resize(6, M.cols());
+    if(M.cols() == 0) return res; // Eigen offsets a null pointer for blocks of an empty matrix (UBSan)
     const Eigen::Matrix<T, 3, Derived::ColsAtCompileTime> bottom = M.template bottomRows<3>();
     const Eigen::Matrix<T, 3, Derived::ColsAtCompileTime> ang =
         M.template topRows<3>() - vector3ToCrossMatrix(r_) * bottom;
@@ -255,6 +258,7 @@ public:
     checkSixRows(M);
     Eigen::Matrix<T, 6, Derived::ColsAtCompileTime> res;
     res.resize(6, M.cols());
+    if(M.cols() == 0) return res; // Eigen offsets a null pointer for blocks of an empty matrix (UBSan)
     res.template bottomRows<3>().noalias() = E_.transpose() * M.template bottomRows<3>();
     res.template topRows<3>().noalias() = E_.transpose() * M.template topRows<3>();
     res.template topRows<3>().noalias() += vector3ToCrossMatrix(r_) * res.template bottomRows<3>();

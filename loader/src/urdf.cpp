@@ -154,6 +154,12 @@ ParserResult fromUrdfString(const std::string & xml, const ParserOptions & opt, 
   for(const std::string & name : checked.joints)
   {
     const urdf::Joint & uj = *model->joints_.at(name);
+    // An <axis> whose xyz attribute urdfdom did not read (misspelt: found by the fuzzer) is zero.
+    const bool hasAxis = uj.type == urdf::Joint::REVOLUTE || uj.type == urdf::Joint::CONTINUOUS
+                         || uj.type == urdf::Joint::PRISMATIC || uj.type == urdf::Joint::PLANAR;
+    const Eigen::Vector3d axis(uj.axis.x, uj.axis.y, uj.axis.z);
+    if(hasAxis && !(axis.allFinite() && axis.norm() > 0.0))
+      throw UrdfError(sourceName, "joint", uj.name, "zero axis (is the xyz attribute of <axis> spelt right?)");
     res.mbg.addJoint(toJoint(uj));
     res.mbg.linkBodies(uj.parent_link_name, toPTransform(uj.parent_to_joint_origin_transform), uj.child_link_name,
                        sva::PTransformd::Identity(), uj.name);

@@ -14,6 +14,7 @@
 #include <rbd/scene/SceneLoader.h>
 
 #include "emit/Functions.h"
+#include "emit/RobotValues.h"
 #include "emit/SceneHeader.h"
 #include "emit/Template.h"
 #include "util/Sha256.h"
@@ -34,23 +35,6 @@ std::string readFile(const std::string & path)
   std::ifstream in(path, std::ios::binary);
   if(!in) throw std::runtime_error(path + ": cannot read file");
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-std::string quotedList(const std::vector<std::string> & names)
-{
-  std::string s;
-  for(const auto & n : names)
-  {
-    if(!s.empty()) s += ", ";
-    s += "\"";
-    for(char c : n)
-    {
-      if(c == '"' || c == '\\') s += '\\';
-      s += c;
-    }
-    s += "\"";
-  }
-  return s;
 }
 
 std::string provenance(const RobotModel & rm, const std::string & sourceName, const std::string & sourceHash,
@@ -147,20 +131,7 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   std::map<std::string, std::string> v;
   v["provenance"] = provenance(rm, sourceName, sourceHash, options, fdAlgorithm);
   v["namespace"] = ns;
-  v["nq"] = std::to_string(rm.nq);
-  v["nv"] = std::to_string(rm.nv);
-  v["nbodies"] = std::to_string(rm.bodies.size());
-  v["nframes"] = std::to_string(rm.joints.size());
-  std::string bodyEnum;
-  std::vector<std::string> bodyNames;
-  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
-  {
-    bodyEnum += fmt::format("  {} = {},{}", rm.bodies[i].ident, i, i + 1 < rm.bodies.size() ? "\n" : "");
-    bodyNames.push_back(rm.bodies[i].name);
-  }
-  v["body_enum"] = bodyEnum;
-  v["body_names"] = quotedList(bodyNames);
-  v["dof_names"] = quotedList(rm.dofNames);
+  v.merge(emit::robotTemplateValues(rm)); // nq, nv, nbodies, nframes, Body enum, names
   const bool fd = rm.masslessSubtrees.empty();
   v["fd_algorithm"] = fd ? fdAlgorithm : "none (singular mass matrix)";
   v["has_forward_dynamics"] = fd ? "true" : "false";

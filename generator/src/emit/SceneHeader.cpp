@@ -1,6 +1,7 @@
 // Assembly of a scene header: which sections of templates/scene_dynamics.hpp.in exist (a disabled
 // effect's section is removed whole), the emitted bodies, per-joint integration lines, outputs.
 #include "SceneHeader.h"
+#include "RobotValues.h"
 
 #include <map>
 #include <stdexcept>
@@ -30,13 +31,6 @@ std::string fill(const std::string & name, const std::map<std::string, bool> & f
                  const std::map<std::string, std::string> & values)
 {
   return fillTemplate(selectSections(templateText(name), flags, "templates/" + name), values, "templates/" + name);
-}
-
-std::string quoted(const std::vector<std::string> & names)
-{
-  std::string s;
-  for(const auto & n : names) s += (s.empty() ? "\"" : ", \"") + n + "\"";
-  return s;
 }
 
 std::string literal(double v)
@@ -240,7 +234,7 @@ std::string describeEffects(const rbd::scene::Scene & scene, const SceneEffects 
   if(fx.hasFriction()) e.push_back(fmt::format("Coulomb friction on {} dofs (v_s {})", countNonZero(fx.friction), fx.frictionVelocity));
   if(fx.hasArmature()) e.push_back(fmt::format("armature on {} dofs", countNonZero(fx.armature)));
   if(!scene.locked.empty()) e.push_back(fmt::format("{} locked joints", scene.locked.size()));
-  if(!scene.externalWrenches.empty()) e.push_back(fmt::format("external wrenches on {}", quoted(scene.externalWrenches)));
+  if(!scene.externalWrenches.empty()) e.push_back(fmt::format("external wrenches on {}", quotedList(scene.externalWrenches)));
   if(!fx.contacts.empty())
     e.push_back(fmt::format("{} contacts (k {}, c {}, mu {}, v_slip {}, ground z {})", fx.contacts.size(), fx.stiffness,
                             fx.contactDamping, fx.mu, fx.slipVelocity, fx.groundHeight));
@@ -292,19 +286,8 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
   v["provenance"] = provenance;
   v["namespace"] = ns;
   v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
-  v["nq"] = std::to_string(rm.nq);
-  v["nv"] = std::to_string(rm.nv);
-  v["nbodies"] = std::to_string(rm.bodies.size());
-  std::string bodyEnum;
-  std::vector<std::string> bodyNames;
-  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
-  {
-    bodyEnum += fmt::format("  {} = {},{}", rm.bodies[i].ident, i, i + 1 < rm.bodies.size() ? "\n" : "");
-    bodyNames.push_back(rm.bodies[i].name);
-  }
-  v["body_enum"] = bodyEnum;
-  v["body_names"] = quoted(bodyNames);
-  v["dof_names"] = quoted(rm.dofNames);
+  v.merge(robotTemplateValues(rm)); // nq, nv, nbodies, Body enum, names
+  v.erase("nframes");                // not shown by the scene header
   v["has_forward_dynamics"] = fd ? "true" : "false";
   v["initial_state"] = initialStateLines(scene, sr);
   v["wrench_param"] = wrenches ? ", [[maybe_unused]] const Wrenches<S> & wrenches" : "";
@@ -321,7 +304,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
     std::vector<std::string> names;
     for(const auto & c : fx.contacts) names.push_back(c.name);
     v["ncontacts"] = std::to_string(fx.contacts.size());
-    v["contact_names"] = quoted(names);
+    v["contact_names"] = quotedList(names);
     v["ground_height"] = fmt::format("{}", fx.groundHeight);
     v["contact_model"] = fmt::format("k = {} N/m, c = {} N s/m, mu = {}, slip velocity {} m/s", fx.stiffness,
                                      fx.contactDamping, fx.mu, fx.slipVelocity);

@@ -319,34 +319,48 @@ EmittedBody forwardDynamicsBody(const RobotModel & rm, const FdOptions & opt)
 
 EmittedBody jacobianBody(const RobotModel & rm)
 {
+  // Column of dof d of joint k (world axes, at the link origin p):
+  //   [R s_w; R s_v + (R s_w) x (p - o_k)],  R = E_0_k^T, o_k = origin of joint k's frame.
+  // Each joint's columns are emitted once; a link jumps to its owner's block, and every block
+  // jumps to its parent's: the path to the root is walked by direct jumps (no per-link copies,
+  // so the code grows with nv, not with the sum of the path lengths).
   Block b;
-  emitBodySwitch(b, rm, "", [&](std::size_t i, const BodyFrame & bf) {
-    b.comment(fmt::format("link '{}': one column per dof on the path, world axes at the link origin p", bf.name));
-    Vec3 p;
-    for(int c = 0; c < 3; ++c) p[c] = Scalar::var(fmt::format("kin.pose[{}].translation({})", i, c));
-    for(int k : rm.path(bf.owner))
+  b.line("const Eigen::Matrix<S, 3, 1> p = kin.pose[static_cast<std::size_t>(body)].translation;");
+  Vec3 p;
+  for(int c = 0; c < 3; ++c) p[c] = Scalar::var(fmt::format("p({})", c));
+  auto label = [&](int k) { return k < 0 ? std::string("jac_done") : fmt::format("jac_{}", rm.joints[static_cast<std::size_t>(k)].tag); };
+  b.line("switch(body)");
+  b.line("{");
+  for(const BodyFrame & bf : rm.bodies)
+    b.line(fmt::format("case Body::{}: goto {};", bf.ident, label(bf.owner)));
+  b.line("}");
+  for(std::size_t k = rm.joints.size(); k-- > 0;)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    b.line(label(static_cast<int>(k)) + ":");
+    b.line("{");
+    b.comment(fmt::format("joint '{}': its columns", mj.name));
+    const JointKernel K = emitJointKernel(b, mj, "kin.q"); // S depends on q only for backward multi-dof joints
+    const Xform X0 = kinFrame(static_cast<int>(k));
+    const std::string h = fmt::format("J_{}", mj.tag);
+    const Vec3 po = sub(b, p, X0.r, h + "_po");
+    for(int d = 0; d < mj.nv; ++d)
     {
-      const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
-      const JointKernel K = emitJointKernel(b, mj, "kin.q"); // S depends on q only for backward multi-dof joints
-      const Xform X0 = kinFrame(k);
-      const std::string h = fmt::format("J{}_{}", i, mj.tag);
-      const Vec3 po = sub(b, p, X0.r, h + "_po");
-      for(int d = 0; d < mj.nv; ++d)
+      const Motion & Sd = K.S[static_cast<std::size_t>(d)];
+      const Vec3 w = tmul(b, X0.E, Sd.w, fmt::format("{}_w{}", h, d));
+      const Vec3 v = add(b, tmul(b, X0.E, Sd.v, fmt::format("{}_Rv{}", h, d)), cross(b, w, po, fmt::format("{}_wxp{}", h, d)),
+                         fmt::format("{}_v{}", h, d));
+      const int col = mj.vIndex + d;
+      for(int r = 0; r < 3; ++r)
       {
-        // [R s_w; R s_v + (R s_w) x (p - o_k)], R = E_0_k^T
-        const Motion & Sd = K.S[static_cast<std::size_t>(d)];
-        const Vec3 w = tmul(b, X0.E, Sd.w, fmt::format("{}_w{}", h, d));
-        const Vec3 v = add(b, tmul(b, X0.E, Sd.v, fmt::format("{}_Rv{}", h, d)), cross(b, w, po, fmt::format("{}_wxp{}", h, d)),
-                           fmt::format("{}_v{}", h, d));
-        const int col = mj.vIndex + d;
-        for(int r = 0; r < 3; ++r)
-        {
-          if(!w[r].isZero()) b.line(fmt::format("J({}, {}) = {};", r, col, Block::text(w[r])));
-          if(!v[r].isZero()) b.line(fmt::format("J({}, {}) = {};", r + 3, col, Block::text(v[r])));
-        }
+        if(!w[r].isZero()) b.line(fmt::format("J({}, {}) = {};", r, col, Block::text(w[r])));
+        if(!v[r].isZero()) b.line(fmt::format("J({}, {}) = {};", r + 3, col, Block::text(v[r])));
       }
     }
-  });
+    b.line("}");
+    b.line(fmt::format("goto {};", label(mj.parent)));
+  }
+  b.line("jac_done:;");
   return finish(b);
 }
 
@@ -438,34 +452,60 @@ EmittedBody bodyAccelerationsBody(const RobotModel & rm)
 
 EmittedBody jacobianDotTimesAlphaBody(const RobotModel & rm)
 {
+  // World frame (Pluecker coordinates at the world origin). Joint k's velocity contribution is
+  // C_k = X_0_k^-1 (S_k alpha_k); the link's velocity is V = sum of C_k over its path and, at
+  // alphaD = 0, its acceleration is A = sum_k V_k x C_k with V_k the sum up to k (the body-frame
+  // recursion a_k = X a_p + v_k x vJ_k, summed in world coordinates). Writing V_k = V - U_k, U_k the
+  // sum of the contributions leafward of k, and V x V = 0: A = sum_k C_k x U_k, accumulated while
+  // walking from the link to the root (U += C_k after the term). Each joint's block is emitted
+  // once; the walk is a chain of direct jumps, as in jacobian().
   Block b;
-  emitBodySwitch(b, rm, "res.setZero();", [&](std::size_t i, const BodyFrame & bf) {
-    b.comment(fmt::format("link '{}': acceleration of its origin at alphaD = 0, world axes", bf.name));
-    const std::vector<int> path = rm.path(bf.owner);
-    std::vector<JointKernel> K(rm.joints.size());
-    for(int k : path) K[static_cast<std::size_t>(k)] = emitJointKernel(b, rm.joints[static_cast<std::size_t>(k)], "q");
-    std::vector<Motion> v, a;
-    emitMotionPass(b, rm, K, path, true, false, v, a);
-    // World pose of the owner along the path, then the link's constant offset.
-    Xform X0 = Xform::identity();
-    bool first = true;
-    for(int k : path)
+  b.line("const Eigen::Matrix<S, 3, 1> p = kin.pose[static_cast<std::size_t>(body)].translation;");
+  b.line("Eigen::Matrix<S, 6, 1> U = Eigen::Matrix<S, 6, 1>::Zero(), A = Eigen::Matrix<S, 6, 1>::Zero();");
+  auto motionVar = [](const std::string & name) {
+    Motion m;
+    for(int c = 0; c < 3; ++c)
     {
-      const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
-      const Xform Xt = constantXform(mj.Xt);
-      const Xform X_0_jt = first ? Xt : compose(b, Xt, X0, mj.tag + "_X0t");
-      X0 = compose(b, K[static_cast<std::size_t>(k)].Xj, X_0_jt, mj.tag + "_X0");
-      first = false;
+      m.w[c] = Scalar::var(fmt::format("{}({})", name, c));
+      m.v[c] = Scalar::var(fmt::format("{}({})", name, c + 3));
     }
-    const Xform C = constantXform(bf.X_owner_link);
-    const std::string h = fmt::format("L{}", i);
-    const Motion vl = apply(b, C, v[static_cast<std::size_t>(bf.owner)], h + "_v");
-    const Motion al = apply(b, C, a[static_cast<std::size_t>(bf.owner)], h + "_a");
-    const Xform X0l = compose(b, C, X0, h + "_X0");
-    // classical acceleration of the origin: R (a_v + w x v); angular: R a_w (R = E_0_link^T)
-    const Vec3 lin = add(b, al.v, cross(b, vl.w, vl.v, h + "_wxv"), h + "_acc");
-    writeMotion(b, "res", {tmul(b, X0l.E, al.w, h + "_Rw"), tmul(b, X0l.E, lin, h + "_Rv")});
-  });
+    return m;
+  };
+  const Motion U = motionVar("U"), A = motionVar("A");
+  auto label = [&](int k) { return k < 0 ? std::string("jd_done") : fmt::format("jd_{}", rm.joints[static_cast<std::size_t>(k)].tag); };
+  b.line("switch(body)");
+  b.line("{");
+  for(const BodyFrame & bf : rm.bodies)
+    b.line(fmt::format("case Body::{}: goto {};", bf.ident, label(bf.owner)));
+  b.line("}");
+  auto accumulate = [&](const std::string & dst, const Motion & m) {
+    for(int c = 0; c < 3; ++c)
+    {
+      if(!m.w[c].isZero()) b.line(fmt::format("{}({}) += {};", dst, c, Block::text(m.w[c])));
+      if(!m.v[c].isZero()) b.line(fmt::format("{}({}) += {};", dst, c + 3, Block::text(m.v[c])));
+    }
+  };
+  for(std::size_t k = rm.joints.size(); k-- > 0;)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    b.line(label(static_cast<int>(k)) + ":");
+    b.line("{");
+    b.comment(fmt::format("joint '{}': A += C x U, U += C", mj.name));
+    const JointKernel K = emitJointKernel(b, mj, "kin.q");
+    const Motion vJ = jointMotion(b, K, "alpha", mj.vIndex, mj.tag + "_vJ");
+    const Motion C = invApply(b, kinFrame(static_cast<int>(k)), vJ, mj.tag + "_C");
+    accumulate("A", cross(b, C, U, mj.tag + "_CxU"));
+    accumulate("U", C);
+    b.line("}");
+    b.line(fmt::format("goto {};", label(mj.parent)));
+  }
+  b.line("jd_done:");
+  b.comment("angular: A_w; classical acceleration of the origin p: A_v + A_w x p + V_w x (V_v + V_w x p)");
+  Vec3 p;
+  for(int c = 0; c < 3; ++c) p[c] = Scalar::var(fmt::format("p({})", c));
+  const Vec3 vp = add(b, U.v, cross(b, U.w, p, "Vwxp"), "vp");
+  const Vec3 lin = add(b, add(b, A.v, cross(b, A.w, p, "Awxp"), "ap"), cross(b, U.w, vp, "Vwxvp"), "acc");
+  writeMotion(b, "res", {A.w, lin});
   return finish(b);
 }
 

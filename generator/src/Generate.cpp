@@ -152,6 +152,7 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   else v["no_forward_dynamics_note"] = emit::noForwardDynamicsNote(rm.masslessSubtrees);
   v["fn_jacobian"] = emit::jacobianBody(rm).text;
   v["fn_center_of_mass"] = emit::centerOfMassBody(rm).text;
+  v["fn_center_of_mass_q"] = emit::centerOfMassFromConfigBody(rm).text;
   v["fn_body_velocities"] = emit::bodyVelocitiesBody(rm).text;
   v["fn_body_accelerations"] = emit::bodyAccelerationsBody(rm).text;
   v["fn_jacobian_dot_times_alpha"] = emit::jacobianDotTimesAlphaBody(rm).text;

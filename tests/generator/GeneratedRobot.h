@@ -24,7 +24,8 @@ struct GeneratedFunctions
   void (*forwardDynamicsCrba)(const S * q, const S * alpha, const S * tau, S * alphaD);
   void (*jacobian)(int body, const S * q, S * J);          ///< via kinematics(): 6 x nv
   void (*jacobianQ)(int body, const S * q, S * J);         ///< jacobian(body, q)
-  void (*centerOfMass)(const S * q, S * com);              ///< 3
+  void (*centerOfMass)(const S * q, S * com);              ///< 3, center_of_mass(q)
+  void (*centerOfMassKin)(const S * q, S * com);           ///< 3, center_of_mass(kinematics(q))
   void (*bodyVelocities)(const S * q, const S * alpha, S * v);                       ///< nbodies x 6
   void (*bodyAccelerations)(const S * q, const S * alpha, const S * alphaD, S * a);  ///< nbodies x 6
   void (*jacobianDotTimesAlpha)(int body, const S * q, const S * alpha, S * out);   ///< 6

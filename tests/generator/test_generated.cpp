@@ -287,12 +287,12 @@ TEST_P(Generated, JacobianAndCenterOfMass)
     const Eigen::Vector3d p = ref.X_mb_link[static_cast<std::size_t>(i)].translation();
     jacs.emplace_back(ref.mb(), ref.mb().body(i).name(), p);
   }
-  ErrorLog jLog{"jacobian"}, cLog{"center_of_mass"};
+  ErrorLog jLog{"jacobian"}, cLog{"center_of_mass"}, ckLog{"center_of_mass(kin)"};
   const int nv = g().nv;
   Eigen::MatrixXd J(6, nv), JQ(6, nv), full;
   Eigen::MatrixXf JF(6, nv);
-  Eigen::Vector3d com;
-  Eigen::Vector3f comF;
+  Eigen::Vector3d com, comK;
+  Eigen::Vector3f comF, comKF;
   for(int s = 0; s < kStates / 4; ++s)
   {
     ref.sample(rng);
@@ -312,11 +312,16 @@ TEST_P(Generated, JacobianAndCenterOfMass)
     g().f.centerOfMass(qf.data(), comF.data());
     const Eigen::Vector3d comRef = rbd::computeCoM(ref.mb(), ref.mbc);
     cLog.add(err(com, comRef), err(comF, comRef));
+    g().d.centerOfMassKin(q.data(), comK.data());
+    g().f.centerOfMassKin(qf.data(), comKF.data());
+    ckLog.add(err(comK, comRef), err(comKF, comRef));
   }
   EXPECT_LE(jLog.worstDouble, kTolDouble);
   EXPECT_LE(jLog.worstFloat, kTolFloatKinematics);
   EXPECT_LE(cLog.worstDouble, kTolDouble);
   EXPECT_LE(cLog.worstFloat, kTolFloatKinematics);
+  EXPECT_LE(ckLog.worstDouble, kTolDouble);
+  EXPECT_LE(ckLog.worstFloat, kTolFloatKinematics);
 }
 
 TEST_P(Generated, VelocitiesAccelerationsMomentum)

@@ -1,6 +1,6 @@
-// Long simulations: total energy of conservative systems (no torque, no damping, gravity) over
-// 20 s with classical RK4 on the runtime's ABA, in double. The drift of a 4th-order method is
-// O(T h^4): we check the bound, the order (halving h divides the drift by ~16) and finiteness.
+// Long simulations: total energy of conservative systems (no torque, no damping, gravity) with
+// classical RK4 on the runtime's ABA, in double. The drift of a 4th-order method is O(T h^4): we
+// check the order (halving h divides the drift by ~16), a bound over 10 s and finiteness.
 // Also the runtime's own integrator (rbd::eulerIntegration, first order): its drift halves with h.
 #include "StabilityUtils.h"
 
@@ -103,34 +103,47 @@ rbd::MultiBody revChain(unsigned seed, int n)
       .makeMultiBody("b0", true);
 }
 
-TEST(EnergyDrift, SevenLinkChainRk4Over10Seconds)
+/// Order and long-run drift of RK4 on one model and initial state:
+///  - order: over the first second, before the chaotic flow amplifies rounding (and the step's
+///    own truncation) into a different trajectory, the drift of a 4th-order method is C h^4, so
+///    each halving of h divides it by 16: the observed order log2(d(h) / d(h/2)) must lie in
+///    [3.5, 4.5] for h = 2e-3 -> 1e-3 -> 5e-4 (a 2nd-order error would give 2, a rounding floor 0);
+///  - long run: over 10 s at h = 5e-4 the drift stays below 1e-4 of the peak kinetic energy (our
+///    stated tolerance for an energy-consistent simulation, 0.01 %; measured 2.8e-6). After the first
+///    seconds the chaotic flow has amplified rounding into a trajectory that depends on the
+///    compiler (g++ -O2 and clang -O1 reach different fast states), so the long run is bounded,
+///    not compared with a measured value or with the first second.
+void checkRk4(const char * what, const rbd::MultiBody & mb, unsigned seed)
+{
+  const double h[3] = {2e-3, 1e-3, 5e-4};
+  Drift first[3];
+  for(int i = 0; i < 3; ++i) first[i] = simulateRk4(mb, seed, 1.0, h[i]);
+  const Drift tenSeconds = simulateRk4(mb, seed, 10.0, h[2]);
+  const double p1 = std::log2(first[0].maxDrift / first[1].maxDrift), p2 = std::log2(first[1].maxDrift / first[2].maxDrift);
+  std::printf("[ %-28s ] RK4 relative energy drift over 1 s: h = 2e-3 %.3g, 1e-3 %.3g, 5e-4 %.3g (order %.2f, %.2f); "
+              "10 s at 5e-4: %.3g\n",
+              what, first[0].maxDrift, first[1].maxDrift, first[2].maxDrift, p1, p2, tenSeconds.maxDrift);
+  for(const Drift & d : first) ASSERT_TRUE(d.finite);
+  ASSERT_TRUE(tenSeconds.finite);
+  EXPECT_GE(p1, 3.5);
+  EXPECT_LE(p1, 4.5);
+  EXPECT_GE(p2, 3.5);
+  EXPECT_LE(p2, 4.5);
+  EXPECT_LE(tenSeconds.maxDrift, 1e-4);
+}
+
+TEST(EnergyDrift, SevenLinkChainRk4)
 {
   // A chaotic 7-link pendulum (random axes, 0.5 m links, light inertias: fast modes) falling
-  // under gravity for 10 s (1e4 .. 2e4 steps).
-  const rbd::MultiBody mb = revChain(1001, 8);
-  const Drift coarse = simulateRk4(mb, 11, 10.0, 1e-3), fine = simulateRk4(mb, 11, 10.0, 5e-4);
-  ASSERT_TRUE(coarse.finite && fine.finite);
-  std::printf("[ 7-link chain RK4 10 s       ] relative energy drift: h = 1e-3: %.3g, h = 5e-4: %.3g, ratio %.1f\n",
-              coarse.maxDrift, fine.maxDrift, coarse.maxDrift / fine.maxDrift);
-  // The proof is the order: a drift of C T h^4 divides by 16 when h halves (rounding, ~1e-13
-  // relative over 2e4 steps, is far below). At h = 1e-3 the fast modes are not yet asymptotic
-  // (measured ratio 22.5; 52 for 2e-3 -> 1e-3), so accepted 12 .. 32; a 2nd-order error gives 4.
-  EXPECT_GE(coarse.maxDrift / fine.maxDrift, 12.0);
-  EXPECT_LE(coarse.maxDrift / fine.maxDrift, 32.0);
-  // Absolute regression bound at h = 5e-4: 1e-4 of the peak kinetic energy (measured 2.8e-6).
-  EXPECT_LE(fine.maxDrift, 1e-4);
+  // under gravity.
+  checkRk4("7-link chain", revChain(1001, 8), 11);
 }
 
 TEST(EnergyDrift, FreeFloatingTreeAllJointTypesRk4)
 {
   // A free-floating random tree with every joint type, in gravity (energy still conserved).
   rbdtest::Rng rng(1002);
-  const rbd::MultiBody mb = dyntest::randomModel(rng, 8, 0.3, true);
-  const Drift d = simulateRk4(mb, 12, 10.0, 1e-3);
-  ASSERT_TRUE(d.finite);
-  std::printf("[ free tree RK4 10 s          ] relative energy drift: %.3g\n", d.maxDrift);
-  // Regression bound, 10x the measured 6.5e-10 (h = 1e-3; slow modes, so far smaller than the chain).
-  EXPECT_LE(d.maxDrift, 1e-8);
+  checkRk4("free tree, all joint types", dyntest::randomModel(rng, 8, 0.3, true), 12);
 }
 
 TEST(EnergyDrift, RuntimeEulerIntegrationIsFirstOrderAndFinite)

@@ -364,15 +364,35 @@ EmittedBody jacobianBody(const RobotModel & rm)
   return finish(b);
 }
 
-EmittedBody centerOfMassBody(const RobotModel & rm)
+namespace
 {
-  Block b;
+
+// com = (sum_k m_k o_k + E_0_k^T h_k + static first moment) / M, from the joints' world frames.
+void writeCenterOfMass(Block & b, const RobotModel & rm, const std::vector<Xform> & X0)
+{
   b.comment("com = (sum_k m_k o_k + E_0_k^T h_k + static first moment) / M");
-  std::vector<Xform> X0;
-  for(std::size_t k = 0; k < rm.joints.size(); ++k) X0.push_back(kinFrame(static_cast<int>(k)));
   const Vec3 sum = emitTotalFirstMoment(b, rm, X0);
   const double invM = rm.totalMass > 0 ? 1.0 / rm.totalMass : 0.0;
   for(int c = 0; c < 3; ++c) b.line(fmt::format("com({}) = {};", c, Block::text(b.sum({Term{invM, {sum[c]}}}, fmt::format("com_{}", c)))));
+}
+
+} // namespace
+
+EmittedBody centerOfMassBody(const RobotModel & rm)
+{
+  Block b;
+  std::vector<Xform> X0;
+  for(std::size_t k = 0; k < rm.joints.size(); ++k) X0.push_back(kinFrame(static_cast<int>(k)));
+  writeCenterOfMass(b, rm, X0);
+  return finish(b);
+}
+
+EmittedBody centerOfMassFromConfigBody(const RobotModel & rm)
+{
+  Block b;
+  b.comment("joint frames only: the link poses of kinematics() are not needed");
+  const auto K = emitKernels(b, rm, "q");
+  writeCenterOfMass(b, rm, emitWorldPoses(b, rm, K));
   return finish(b);
 }
 

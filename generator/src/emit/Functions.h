@@ -66,6 +66,8 @@ EmittedBody abaBody(const RobotModel & rm);
 EmittedBody jacobianBody(const RobotModel & rm);
 /// Reads `kin`; returns the centre of mass in world coordinates in `com`.
 EmittedBody centerOfMassBody(const RobotModel & rm);
+/// Reads q; returns the centre of mass in `com` (joint frames only, no link poses).
+EmittedBody centerOfMassFromConfigBody(const RobotModel & rm);
 
 /// Reads q, alpha; fills `res[b]` (link velocities, link coordinates).
 EmittedBody bodyVelocitiesBody(const RobotModel & rm);

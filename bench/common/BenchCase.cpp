@@ -39,7 +39,11 @@ BenchCase loadCase(const std::string & name, const std::string & urdf, bool floa
       const int p = mb.jointPosInParam(i);
       for(int k = 0; k < j.params(); ++k) st.q(p + k) = 3 * u(rng);
       if(j.type() == rbd::Joint::Spherical || j.type() == rbd::Joint::Free)
-        st.q.segment<4>(p) = Eigen::Vector4d(u(rng), u(rng), u(rng), u(rng)).normalized();
+      {
+        Eigen::Vector4d quat; // one draw per statement: the same states with g++ and clang++
+        for(int k = 0; k < 4; ++k) quat[k] = u(rng);
+        st.q.segment<4>(p) = quat.normalized();
+      }
     }
     for(int k = 0; k < mb.nrDof(); ++k)
     {

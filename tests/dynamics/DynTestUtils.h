@@ -71,7 +71,8 @@ inline rbd::MultiBodyGraph allJointsGraph(rbdtest::Rng & rng)
     g.addJoint(J(e.type, rbdtest::randomUnit(rng), true, jn));
     const std::string a = "b" + std::to_string(e.from), b = "b" + std::to_string(e.to);
     // isB1toB2 == false: the joint moves a w.r.t. b, so walking a -> b traverses it backward.
-    g.linkBodies(a, rbdtest::randomTransform(rng), b, rbdtest::randomTransform(rng), jn, e.forward);
+    const sva::PTransformd X_a_j = rbdtest::randomTransform(rng), X_b_j = rbdtest::randomTransform(rng);
+    g.linkBodies(a, X_a_j, b, X_b_j, jn, e.forward);
   }
   return g;
 }

@@ -371,9 +371,18 @@ TYPED_TEST(Kinematics, EulerIntegrationExactCases)
   graph.addJoint(rbd::Joint(rbd::Joint::Prism, rbdtest::randomUnit(rng), true, "prism"));
   graph.addJoint(rbd::Joint(rbd::Joint::Cylindrical, rbdtest::randomUnit(rng), true, "cyl"));
   graph.addJoint(rbd::Joint(rbd::Joint::Rev, rbdtest::randomUnit(rng), false, "rev"));
-  graph.linkBodies("a", rbdtest::randomTransform(rng), "b", rbdtest::randomTransform(rng), "prism");
-  graph.linkBodies("b", rbdtest::randomTransform(rng), "c", rbdtest::randomTransform(rng), "cyl");
-  graph.linkBodies("c", rbdtest::randomTransform(rng), "d", rbdtest::randomTransform(rng), "rev");
+  {
+    const sva::PTransformd X1 = rbdtest::randomTransform(rng), X2 = rbdtest::randomTransform(rng);
+    graph.linkBodies("a", X1, "b", X2, "prism");
+  }
+  {
+    const sva::PTransformd X1 = rbdtest::randomTransform(rng), X2 = rbdtest::randomTransform(rng);
+    graph.linkBodies("b", X1, "c", X2, "cyl");
+  }
+  {
+    const sva::PTransformd X1 = rbdtest::randomTransform(rng), X2 = rbdtest::randomTransform(rng);
+    graph.linkBodies("c", X1, "d", X2, "rev");
+  }
   const auto mb = dyntest::castModel<T>(graph.makeMultiBody("a", rbd::Joint::Free));
   rbd::MultiBodyConfigTpl<T> mbc(mb);
   rbdtest::randomState<T>(rng, mb, mbc);

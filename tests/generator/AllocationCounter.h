@@ -1,12 +1,26 @@
 #pragma once
 // Counts heap allocations (operator new and malloc) made by this thread while counting is on.
-// Include in exactly one translation unit per executable: it replaces the global allocators.
+// Include in exactly one translation unit per executable: it replaces the global allocators or,
+// under AddressSanitizer (which owns malloc), installs the sanitizer's allocation hook instead.
 
 #include <cstdlib>
 #include <new>
 
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define RBDGEN_TEST_ASAN 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__)
+#define RBDGEN_TEST_ASAN 1
+#endif
+
+#if defined(RBDGEN_TEST_ASAN)
+#include <sanitizer/allocator_interface.h>
+#else
 extern "C" void * __libc_malloc(std::size_t size); // glibc's own malloc, for the interposed one
 extern "C" void __libc_free(void * p);
+#endif
 
 namespace rbdgentest
 {
@@ -26,6 +40,18 @@ struct AllocationScope
 };
 } // namespace rbdgentest
 
+#if defined(RBDGEN_TEST_ASAN)
+// Every allocation (malloc, new) goes through the sanitizer's allocator, which calls this hook.
+namespace rbdgentest
+{
+inline void onAllocation(const volatile void *, std::size_t)
+{
+  if(countAllocations) ++allocationCount;
+}
+inline void onFree(const volatile void *) {}
+inline const int allocationHookInstalled = __sanitizer_install_malloc_and_free_hooks(onAllocation, onFree);
+} // namespace rbdgentest
+#else
 extern "C" void * malloc(std::size_t size)
 {
   if(rbdgentest::countAllocations) ++rbdgentest::allocationCount;
@@ -58,3 +84,4 @@ void operator delete[](void * p, std::size_t) noexcept
 {
   __libc_free(p);
 }
+#endif

@@ -403,6 +403,7 @@ TEST_P(Generated, NoHeapAllocation)
     if(g().d.forwardDynamics) g().d.forwardDynamics(q.data(), a.data(), ad.data(), out.data());
     g().d.jacobian(nb - 1, q.data(), out.data());
     g().d.centerOfMass(q.data(), out.data());
+    g().d.centerOfMassKin(q.data(), out.data());
     g().d.bodyVelocities(q.data(), a.data(), out.data());
     g().d.bodyAccelerations(q.data(), a.data(), ad.data(), out.data());
     g().d.jacobianDotTimesAlpha(nb - 1, q.data(), a.data(), out.data());

@@ -213,7 +213,8 @@ TEST_P(SceneGenerated, Dynamics)
   if(g().contactForces)
   {
     std::printf("[ %-28s ] %d active contact evaluations of %d\n", "contacts", active, kStates * g().ncontacts);
-    EXPECT_GT(active, kStates / 2) << "the random states must put contacts in the ground";
+    // Enough evaluations with the point in the ground (a non-zero force to compare): at least 10.
+    EXPECT_GE(active, 10) << "the random states must put contacts in the ground";
     EXPECT_LT(active, kStates * g().ncontacts) << "and some out of it";
   }
   for(const Log * l : {&lH, &lID, &lFD, &lB, &lG, &lV, &lN, &lC})

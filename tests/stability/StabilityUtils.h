@@ -87,7 +87,8 @@ inline rbd::MultiBodyGraph wideTreeGraph(rbdtest::Rng & rng, int branches, int d
       g.addBody(rbd::Body(rbdtest::randomInertia(rng), name));
       const rbd::Joint j = randomRev(rng, k);
       g.addJoint(j);
-      g.linkBodies(parent, rbdtest::randomTransform(rng), name, rbdtest::randomTransform(rng, 0.1), j.name());
+      const sva::PTransformd X_p_j = rbdtest::randomTransform(rng), X_c_j = rbdtest::randomTransform(rng, 0.1);
+      g.linkBodies(parent, X_p_j, name, X_c_j, j.name());
       parent = name;
     }
   }

@@ -23,7 +23,8 @@ TEST(ExtremeStates, BodiesFarFromTheOrigin)
   for(const double offset : {10.0, 100.0, 1000.0})
   {
     // The robot's base 'offset' m away, its links 'offset'/10 m apart.
-    const sva::PTransformd X_0_j0(rbdtest::randomRotation(rng), offset * rbdtest::randomUnit(rng));
+    const Eigen::Matrix3d E_0_j0 = rbdtest::randomRotation(rng);
+    const sva::PTransformd X_0_j0(E_0_j0, offset * rbdtest::randomUnit(rng));
     const rbd::MultiBody mb = anyChain(rng, 10, offset / 10, X_0_j0);
     for(int s = 0; s < 10; ++s)
     {

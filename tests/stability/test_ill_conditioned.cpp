@@ -27,7 +27,8 @@ rbd::MultiBody fallingMassChain(rbdtest::Rng & rng, int n, double ratio, const s
 stab::JointFn nearlyParallelAxes(double spread)
 {
   return [spread](rbdtest::Rng & rng, int k) {
-    const Eigen::Vector3d a(spread * rbdtest::uniform(rng, -1, 1), spread * rbdtest::uniform(rng, -1, 1), 1);
+    const Eigen::Vector2d xy = spread * rbdtest::uniformVec<2>(rng, -1, 1);
+    const Eigen::Vector3d a(xy[0], xy[1], 1);
     return rbd::Joint(rbd::Joint::Rev, a.normalized(), true, "j" + std::to_string(k));
   };
 }

@@ -154,7 +154,7 @@ sva::RBInertiad limitInertia(rbdtest::Rng & rng, int k, double gap)
   const double a = k % 3 == 0 ? 0.0 : rbdtest::uniform(rng, 0.01, 0.1), b = rbdtest::uniform(rng, 0.01, 0.1);
   const Eigen::Vector3d d(a, b, (a + b) * (1 - gap));
   const Eigen::Matrix3d R = rbdtest::randomRotation(rng);
-  const Eigen::Vector3d c(rbdtest::uniform(rng, -0.2, 0.2), rbdtest::uniform(rng, -0.2, 0.2), rbdtest::uniform(rng, -0.2, 0.2));
+  const Eigen::Vector3d c = rbdtest::uniformVec<3>(rng, -0.2, 0.2);
   return sva::RBInertiad(m, m * c, sva::inertiaToOrigin(Eigen::Matrix3d(R * d.asDiagonal() * R.transpose()), m, c,
                                                         Eigen::Matrix3d::Identity()));
 }

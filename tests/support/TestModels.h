@@ -22,28 +22,44 @@ inline double uniform(Rng & rng, double lo, double hi)
   return std::uniform_real_distribution<double>(lo, hi)(rng);
 }
 
+// Every draw below is its own statement: function arguments are evaluated in an unspecified order
+// (g++ and clang++ differ), and the same seed must give the same model with either compiler.
+
+/// N numbers uniform in [lo, hi], drawn in index order.
+template<int N>
+Eigen::Matrix<double, N, 1> uniformVec(Rng & rng, double lo, double hi)
+{
+  Eigen::Matrix<double, N, 1> v;
+  for(int i = 0; i < N; ++i) v[i] = uniform(rng, lo, hi);
+  return v;
+}
+
 inline Eigen::Vector3d randomUnit(Rng & rng)
 {
   Eigen::Vector3d v;
   do
   {
-    v = Eigen::Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    v = uniformVec<3>(rng, -1, 1);
   } while(v.norm() < 0.1);
   return v.normalized();
 }
 
+/// A random unit quaternion (w, x, y, z drawn in that order).
+inline Eigen::Quaterniond randomQuaternion(Rng & rng)
+{
+  const Eigen::Vector4d wxyz = uniformVec<4>(rng, -1, 1);
+  return Eigen::Quaterniond(wxyz[0], wxyz[1], wxyz[2], wxyz[3]).normalized();
+}
+
 inline Eigen::Matrix3d randomRotation(Rng & rng)
 {
-  Eigen::Quaterniond q(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
-  q.normalize();
-  return q.toRotationMatrix();
+  return randomQuaternion(rng).toRotationMatrix();
 }
 
 inline sva::PTransformd randomTransform(Rng & rng, double maxOffset = 0.5)
 {
-  return sva::PTransformd(randomRotation(rng), Eigen::Vector3d(uniform(rng, -maxOffset, maxOffset),
-                                                               uniform(rng, -maxOffset, maxOffset),
-                                                               uniform(rng, -maxOffset, maxOffset)));
+  const Eigen::Matrix3d E = randomRotation(rng);
+  return sva::PTransformd(E, uniformVec<3>(rng, -maxOffset, maxOffset));
 }
 
 /// A physically valid spatial inertia at the body origin: principal moments satisfying the
@@ -51,13 +67,13 @@ inline sva::PTransformd randomTransform(Rng & rng, double maxOffset = 0.5)
 inline sva::RBInertiad randomInertia(Rng & rng, double massLo = 0.2, double massHi = 3.0)
 {
   const double m = uniform(rng, massLo, massHi);
-  Eigen::Vector3d p(uniform(rng, 0.01, 0.1), uniform(rng, 0.01, 0.1), uniform(rng, 0.01, 0.1));
+  const Eigen::Vector3d p = uniformVec<3>(rng, 0.01, 0.1);
   // moments of a box with half-sizes p: I_x = m/3 (p_y^2 + p_z^2)...
   Eigen::Vector3d d(m / 3 * (p.y() * p.y() + p.z() * p.z()), m / 3 * (p.x() * p.x() + p.z() * p.z()),
                     m / 3 * (p.x() * p.x() + p.y() * p.y()));
   const Eigen::Matrix3d R = randomRotation(rng);
   const Eigen::Matrix3d Ic = R * d.asDiagonal() * R.transpose();
-  const Eigen::Vector3d c(uniform(rng, -0.2, 0.2), uniform(rng, -0.2, 0.2), uniform(rng, -0.2, 0.2));
+  const Eigen::Vector3d c = uniformVec<3>(rng, -0.2, 0.2);
   return sva::RBInertiad(m, m * c, sva::inertiaToOrigin(Ic, m, c, Eigen::Matrix3d::Identity()));
 }
 
@@ -88,7 +104,8 @@ inline rbd::MultiBodyGraph randomGraph(Rng & rng, int n, const RandomTreeOptions
     // A backward joint moves the parent w.r.t. the child (isB1toB2 = false with b1 = parent), so
     // the tree rooted at b0 traverses it against its direction.
     const bool backward = uniform(rng, 0, 1) < opt.backwardProbability;
-    mbg.linkBodies(pn, randomTransform(rng), cn, randomTransform(rng), jn, !backward);
+    const sva::PTransformd X_p_j = randomTransform(rng), X_c_j = randomTransform(rng);
+    mbg.linkBodies(pn, X_p_j, cn, X_c_j, jn, !backward);
   }
   return mbg;
 }
@@ -105,8 +122,7 @@ void randomState(Rng & rng, const rbd::MultiBodyTpl<T> & mb, rbd::MultiBodyConfi
     const auto t = mb.joint(i).type();
     if(t == rbd::Joint::Spherical || t == rbd::Joint::Free)
     {
-      Eigen::Quaterniond quat(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
-      quat.normalize();
+      const Eigen::Quaterniond quat = randomQuaternion(rng);
       mbc.q[k][0] = T(quat.w());
       mbc.q[k][1] = T(quat.x());
       mbc.q[k][2] = T(quat.y());

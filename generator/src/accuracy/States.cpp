@@ -25,7 +25,9 @@ std::vector<State> randomStates(const rbd::MultiBody & mb, int count, std::uint6
       if(j.type() == rbd::JointType::Spherical || j.type() == rbd::JointType::Free)
       {
         // A normalised 4-d Gaussian is uniform on the unit sphere of quaternions.
-        Eigen::Vector4d quat(gauss(rng), gauss(rng), gauss(rng), gauss(rng));
+        // (one draw per statement: argument evaluation order is unspecified, seeds must not depend on the compiler)
+        Eigen::Vector4d quat;
+        for(int k = 0; k < 4; ++k) quat[k] = gauss(rng);
         st.q.segment<4>(p) = quat.normalized();
       }
     }

@@ -33,7 +33,9 @@ file(REMOVE_RECURSE ${PREFIX} ${WORK})
 run(out ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX})
 file(COPY ${PREFIX}/${DATADIR}/rbdgen/robots/pendulum.urdf DESTINATION ${WORK}/robot)
 run(out ${CMAKE_COMMAND} -S ${CONSUMER_SRC} -B ${build} -G ${GENERATOR}
-    -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${PREFIX} -DRBDGEN_PENDULUM_URDF=${urdf})
+    -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${PREFIX} -DRBDGEN_PENDULUM_URDF=${urdf}
+    -DCMAKE_CXX_COMPILER=${CONSUMER_CXX} "-DCMAKE_CXX_FLAGS=${CONSUMER_CXX_FLAGS}"
+    "-DCMAKE_EXE_LINKER_FLAGS=${CONSUMER_LINKER_FLAGS}")
 set(header ${build}/pendulum_dynamics/pendulum/dynamics.hpp)
 # The consumer's compile line. (-d explain also lists main.cpp.o as "dirty" before the restat of
 # the header prunes it: only the compile line proves it was compiled.)

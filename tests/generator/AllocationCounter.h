@@ -16,7 +16,9 @@
 #endif
 
 #if defined(RBDGEN_TEST_ASAN)
-#include <sanitizer/allocator_interface.h>
+// The sanitizer runtime's hook (declared here: g++ ships no <sanitizer/allocator_interface.h>).
+extern "C" int __sanitizer_install_malloc_and_free_hooks(void (*malloc_hook)(const volatile void *, std::size_t),
+                                                         void (*free_hook)(const volatile void *));
 #else
 extern "C" void * __libc_malloc(std::size_t size); // glibc's own malloc, for the interposed one
 extern "C" void __libc_free(void * p);

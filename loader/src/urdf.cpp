@@ -149,11 +149,20 @@ ParserResult fromUrdfString(const std::string & xml, const ParserOptions & opt, 
   for(const std::string & w : urdfdomWarnings)
     res.warnings.push_back(sourceName + ": robot '" + res.name + "': urdfdom: " + w);
 
+  // The names our checker read must be the ones urdfdom read: the two XML parsers differ on
+  // malformed entity references such as name="a&b" (found by the fuzzer).
+  auto inModel = [&](const auto & map, const std::string & element, const std::string & name) -> const auto & {
+    const auto it = map.find(name);
+    if(it == map.end() || !it->second)
+      throw UrdfError(sourceName, element, name,
+                      "name read differently by urdfdom (an '&' that is not a valid entity reference, or another XML error in it?)");
+    return *it->second;
+  };
   // Bodies and joints in document order; a body frame is its link frame.
-  for(const std::string & name : checked.links) res.mbg.addBody(rbd::Body(toRBInertia(model->links_.at(name)->inertial), name));
+  for(const std::string & name : checked.links) res.mbg.addBody(rbd::Body(toRBInertia(inModel(model->links_, "link", name).inertial), name));
   for(const std::string & name : checked.joints)
   {
-    const urdf::Joint & uj = *model->joints_.at(name);
+    const urdf::Joint & uj = inModel(model->joints_, "joint", name);
     // An <axis> whose xyz attribute urdfdom did not read (misspelt: found by the fuzzer) is zero.
     const bool hasAxis = uj.type == urdf::Joint::REVOLUTE || uj.type == urdf::Joint::CONTINUOUS
                          || uj.type == urdf::Joint::PRISMATIC || uj.type == urdf::Joint::PLANAR;

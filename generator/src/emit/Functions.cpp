@@ -47,24 +47,29 @@ Xform kinFrame(int k)
   return X;
 }
 
-// switch(body) { case Body::<link>: { ... break; } ... }: caseBody emits the case of a link that
-// moves; a static link gets `staticLine` (if any).
+// Walk from link `body` to the root, with each joint's block emitted once:
+//   switch(body) { case Body::<link>: goto <prefix>_<owner joint>; ... }
+//   <prefix>_<joint>: { jointBlock(k) } goto <prefix>_<parent joint>; ...  <prefix>_done:
+// Direct jumps, so the code grows with the number of joints, not with the sum of the path lengths.
 template<typename F>
-void emitBodySwitch(Block & b, const RobotModel & rm, const std::string & staticLine, F && caseBody)
+void emitPathWalk(Block & b, const RobotModel & rm, const std::string & prefix, F && jointBlock)
 {
+  auto label = [&](int k) {
+    return k < 0 ? prefix + "_done" : fmt::format("{}_{}", prefix, rm.joints[static_cast<std::size_t>(k)].tag);
+  };
   b.line("switch(body)");
   b.line("{");
-  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
-  {
-    const BodyFrame & bf = rm.bodies[i];
-    b.line(fmt::format("case Body::{}:", bf.ident));
-    b.line("{");
-    if(bf.owner >= 0) caseBody(i, bf);
-    else if(!staticLine.empty()) b.line(staticLine);
-    b.line("break;");
-    b.line("}");
-  }
+  for(const BodyFrame & bf : rm.bodies) b.line(fmt::format("case Body::{}: goto {};", bf.ident, label(bf.owner)));
   b.line("}");
+  for(std::size_t k = rm.joints.size(); k-- > 0;)
+  {
+    b.line(label(static_cast<int>(k)) + ":");
+    b.line("{");
+    jointBlock(k, rm.joints[k]);
+    b.line("}");
+    b.line(fmt::format("goto {};", label(rm.joints[k].parent)));
+  }
+  b.line(label(-1) + ":;");
 }
 
 // Composite inertias Ic_k (body coordinates): Ic_p += X_p_k^T Ic_k X_p_k, leaves to root.
@@ -328,17 +333,7 @@ EmittedBody jacobianBody(const RobotModel & rm)
   b.line("const Eigen::Matrix<S, 3, 1> p = kin.pose[static_cast<std::size_t>(body)].translation;");
   Vec3 p;
   for(int c = 0; c < 3; ++c) p[c] = Scalar::var(fmt::format("p({})", c));
-  auto label = [&](int k) { return k < 0 ? std::string("jac_done") : fmt::format("jac_{}", rm.joints[static_cast<std::size_t>(k)].tag); };
-  b.line("switch(body)");
-  b.line("{");
-  for(const BodyFrame & bf : rm.bodies)
-    b.line(fmt::format("case Body::{}: goto {};", bf.ident, label(bf.owner)));
-  b.line("}");
-  for(std::size_t k = rm.joints.size(); k-- > 0;)
-  {
-    const MovingJoint & mj = rm.joints[k];
-    b.line(label(static_cast<int>(k)) + ":");
-    b.line("{");
+  emitPathWalk(b, rm, "jac", [&](std::size_t k, const MovingJoint & mj) {
     b.comment(fmt::format("joint '{}': its columns", mj.name));
     const JointKernel K = emitJointKernel(b, mj, "kin.q"); // S depends on q only for backward multi-dof joints
     const Xform X0 = kinFrame(static_cast<int>(k));
@@ -357,10 +352,7 @@ EmittedBody jacobianBody(const RobotModel & rm)
         if(!v[r].isZero()) b.line(fmt::format("J({}, {}) = {};", r + 3, col, Block::text(v[r])));
       }
     }
-    b.line("}");
-    b.line(fmt::format("goto {};", label(mj.parent)));
-  }
-  b.line("jac_done:;");
+  });
   return finish(b);
 }
 
@@ -492,12 +484,6 @@ EmittedBody jacobianDotTimesAlphaBody(const RobotModel & rm)
     return m;
   };
   const Motion U = motionVar("U"), A = motionVar("A");
-  auto label = [&](int k) { return k < 0 ? std::string("jd_done") : fmt::format("jd_{}", rm.joints[static_cast<std::size_t>(k)].tag); };
-  b.line("switch(body)");
-  b.line("{");
-  for(const BodyFrame & bf : rm.bodies)
-    b.line(fmt::format("case Body::{}: goto {};", bf.ident, label(bf.owner)));
-  b.line("}");
   auto accumulate = [&](const std::string & dst, const Motion & m) {
     for(int c = 0; c < 3; ++c)
     {
@@ -505,21 +491,14 @@ EmittedBody jacobianDotTimesAlphaBody(const RobotModel & rm)
       if(!m.v[c].isZero()) b.line(fmt::format("{}({}) += {};", dst, c + 3, Block::text(m.v[c])));
     }
   };
-  for(std::size_t k = rm.joints.size(); k-- > 0;)
-  {
-    const MovingJoint & mj = rm.joints[k];
-    b.line(label(static_cast<int>(k)) + ":");
-    b.line("{");
+  emitPathWalk(b, rm, "jd", [&](std::size_t k, const MovingJoint & mj) {
     b.comment(fmt::format("joint '{}': A += C x U, U += C", mj.name));
     const JointKernel K = emitJointKernel(b, mj, "kin.q");
     const Motion vJ = jointMotion(b, K, "alpha", mj.vIndex, mj.tag + "_vJ");
     const Motion C = invApply(b, kinFrame(static_cast<int>(k)), vJ, mj.tag + "_C");
     accumulate("A", cross(b, C, U, mj.tag + "_CxU"));
     accumulate("U", C);
-    b.line("}");
-    b.line(fmt::format("goto {};", label(mj.parent)));
-  }
-  b.line("jd_done:");
+  });
   b.comment("angular: A_w; classical acceleration of the origin p: A_v + A_w x p + V_w x (V_v + V_w x p)");
   Vec3 p;
   for(int c = 0; c < 3; ++c) p[c] = Scalar::var(fmt::format("p({})", c));

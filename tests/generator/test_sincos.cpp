@@ -98,7 +98,7 @@ class SinCosAll : public ::testing::Test
 {
 };
 using Scalars = ::testing::Types<double, float>;
-TYPED_TEST_SUITE(SinCosAll, Scalars);
+TYPED_TEST_SUITE(SinCosAll, Scalars, );
 
 TYPED_TEST(SinCosAll, MatchesLongDoubleForEveryBatchSize)
 {

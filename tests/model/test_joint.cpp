@@ -122,7 +122,7 @@ class JointTest : public ::testing::Test
 {
 };
 using Scalars = ::testing::Types<double, long double>;
-TYPED_TEST_SUITE(JointTest, Scalars);
+TYPED_TEST_SUITE(JointTest, Scalars, );
 
 TYPED_TEST(JointTest, SizesAndZeroParamIsIdentity)
 {

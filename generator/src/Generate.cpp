@@ -1,5 +1,6 @@
 #include "Generate.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +18,7 @@
 #include "emit/RobotValues.h"
 #include "emit/SceneHeader.h"
 #include "emit/Template.h"
+#include "passes/SupportPath.h"
 #include "util/Sha256.h"
 
 #ifndef RBDGEN_VERSION
@@ -151,6 +153,21 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   }
   else v["no_forward_dynamics_note"] = emit::noForwardDynamicsNote(rm.masslessSubtrees);
   v["fn_jacobian"] = emit::jacobianBody(rm).text;
+  v["fn_jacobian_q"] = emit::jacobianFromConfigBody(rm, false).text;
+  v["fn_jacobian_q_point"] = emit::jacobianFromConfigBody(rm, true).text;
+  v["fn_jacobian_dot_times_alpha_q"] = emit::jacobianDotTimesAlphaFromConfigBody(rm).text;
+  v["support_tables"] = passes::supportPathTables(rm);
+  {
+    std::string begin, count;
+    for(const MovingJoint & mj : rm.joints)
+    {
+      begin += fmt::format("{}{}", begin.empty() ? "" : ", ", mj.vIndex);
+      count += fmt::format("{}{}", count.empty() ? "" : ", ", mj.nv);
+    }
+    v["njoint_slots"] = std::to_string(std::max<std::size_t>(rm.joints.size(), 1));
+    v["dof_begin"] = begin.empty() ? "0" : begin;
+    v["dof_count"] = count.empty() ? "0" : count;
+  }
   v["fn_center_of_mass"] = emit::centerOfMassBody(rm).text;
   v["fn_center_of_mass_q"] = emit::centerOfMassFromConfigBody(rm).text;
   v["fn_body_velocities"] = emit::bodyVelocitiesBody(rm).text;
@@ -158,11 +175,8 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   v["fn_jacobian_dot_times_alpha"] = emit::jacobianDotTimesAlphaBody(rm).text;
   v["fn_com_jacobian"] = emit::comJacobianBody(rm).text;
   v["fn_centroidal_momentum_matrix"] = emit::centroidalMomentumMatrixBody(rm).text;
-  const auto & templates = embeddedTemplates();
-  v["detail_sincos"] = templates.at("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
-  const auto it = templates.find("dynamics.hpp.in");
-  if(it == templates.end()) throw std::logic_error("template dynamics.hpp.in is not embedded");
-  const std::string text = selectSections(it->second, {{"forward_dynamics", fd}, {"no_forward_dynamics", !fd}},
+  v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
+  const std::string text = selectSections(templateText("dynamics.hpp.in"), {{"forward_dynamics", fd}, {"no_forward_dynamics", !fd}},
                                           "templates/dynamics.hpp.in");
   return fillTemplate(text, v, "templates/dynamics.hpp.in");
 }

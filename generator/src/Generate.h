@@ -51,7 +51,4 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
 /// Returns the paths written or kept.
 std::vector<std::string> writeFiles(const std::string & outDir, const std::vector<GeneratedFile> & files);
 
-/// Embedded templates (generated from templates/ at build time).
-const std::map<std::string, std::string> & embeddedTemplates();
-
 } // namespace rbdgen

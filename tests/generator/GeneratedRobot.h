@@ -23,12 +23,15 @@ struct GeneratedFunctions
   void (*forwardDynamicsAba)(const S * q, const S * alpha, const S * tau, S * alphaD);
   void (*forwardDynamicsCrba)(const S * q, const S * alpha, const S * tau, S * alphaD);
   void (*jacobian)(int body, const S * q, S * J);          ///< via kinematics(): 6 x nv
-  void (*jacobianQ)(int body, const S * q, S * J);         ///< jacobian(body, q)
+  void (*jacobianQ)(int body, const S * q, S * J);         ///< jacobian(body, q): support path only
+  void (*jacobianPoint)(int body, const S * q, const S * point, S * J);    ///< jacobian(body, q, point)
+  void (*jacobianKinPoint)(int body, const S * q, const S * point, S * J); ///< jacobian(body, kinematics(q), point)
   void (*centerOfMass)(const S * q, S * com);              ///< 3, center_of_mass(q)
   void (*centerOfMassKin)(const S * q, S * com);           ///< 3, center_of_mass(kinematics(q))
   void (*bodyVelocities)(const S * q, const S * alpha, S * v);                       ///< nbodies x 6
   void (*bodyAccelerations)(const S * q, const S * alpha, const S * alphaD, S * a);  ///< nbodies x 6
-  void (*jacobianDotTimesAlpha)(int body, const S * q, const S * alpha, S * out);   ///< 6
+  void (*jacobianDotTimesAlpha)(int body, const S * q, const S * alpha, S * out);   ///< 6, from q: support path only
+  void (*jacobianDotTimesAlphaKin)(int body, const S * q, const S * alpha, S * out); ///< 6, via kinematics()
   void (*comJacobian)(const S * q, S * J);                 ///< 3 x nv
   void (*centroidalMomentumMatrix)(const S * q, S * A);    ///< 6 x nv
 };

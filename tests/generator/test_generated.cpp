@@ -287,10 +287,11 @@ TEST_P(Generated, JacobianAndCenterOfMass)
     const Eigen::Vector3d p = ref.X_mb_link[static_cast<std::size_t>(i)].translation();
     jacs.emplace_back(ref.mb(), ref.mb().body(i).name(), p);
   }
-  ErrorLog jLog{"jacobian"}, cLog{"center_of_mass"}, ckLog{"center_of_mass(kin)"};
+  ErrorLog jLog{"jacobian"}, jqLog{"jacobian(body, q)"}, jpLog{"jacobian(body, q, point)"},
+      jkpLog{"jacobian(body, kin, point)"}, cLog{"center_of_mass"}, ckLog{"center_of_mass(kin)"};
   const int nv = g().nv;
-  Eigen::MatrixXd J(6, nv), JQ(6, nv), full;
-  Eigen::MatrixXf JF(6, nv);
+  Eigen::MatrixXd J(6, nv), JQ(6, nv), JP(6, nv), JKP(6, nv), full, fullP;
+  Eigen::MatrixXf JF(6, nv), JQF(6, nv), JPF(6, nv), JKPF(6, nv);
   Eigen::Vector3d com, comK;
   Eigen::Vector3f comF, comKF;
   for(int s = 0; s < kStates / 4; ++s)
@@ -298,15 +299,29 @@ TEST_P(Generated, JacobianAndCenterOfMass)
     ref.sample(rng);
     const Eigen::VectorXd q = ref.q();
     const Eigen::VectorXf qf = toFloat(q);
+    // a point of each link (link coordinates), new for every state: a tool tip, a foot sole...
+    const Eigen::Vector3d point = rbdtest::uniformVec<3>(rng, -0.5, 0.5);
+    const Eigen::Vector3f pointF = point.cast<float>();
     for(int i = 0; i < g().nbodies; ++i)
     {
       auto & jac = jacs[static_cast<std::size_t>(i)];
       jac.fullJacobian(ref.mb(), jac.jacobian(ref.mb(), ref.mbc), full);
+      // the runtime's Jacobian at the same point, given in the MultiBody body frame
+      const sva::PTransformd & X = ref.X_mb_link[static_cast<std::size_t>(i)];
+      rbd::Jacobian jacP(ref.mb(), ref.mb().body(i).name(), X.translation() + X.rotation().transpose() * point);
+      jacP.fullJacobian(ref.mb(), jacP.jacobian(ref.mb(), ref.mbc), fullP);
       g().d.jacobian(i, q.data(), J.data());
       g().d.jacobianQ(i, q.data(), JQ.data());
+      g().d.jacobianPoint(i, q.data(), point.data(), JP.data());
+      g().d.jacobianKinPoint(i, q.data(), point.data(), JKP.data());
       g().f.jacobian(i, qf.data(), JF.data());
+      g().f.jacobianQ(i, qf.data(), JQF.data());
+      g().f.jacobianPoint(i, qf.data(), pointF.data(), JPF.data());
+      g().f.jacobianKinPoint(i, qf.data(), pointF.data(), JKPF.data());
       jLog.add(err(J, full), err(JF, full));
-      ASSERT_EQ(J, JQ) << "jacobian(body, q) != jacobian(body, kinematics(q))";
+      jqLog.add(err(JQ, full), err(JQF, full));
+      jpLog.add(err(JP, fullP), err(JPF, fullP));
+      jkpLog.add(err(JKP, fullP), err(JKPF, fullP));
     }
     g().d.centerOfMass(q.data(), com.data());
     g().f.centerOfMass(qf.data(), comF.data());
@@ -316,8 +331,11 @@ TEST_P(Generated, JacobianAndCenterOfMass)
     g().f.centerOfMassKin(qf.data(), comKF.data());
     ckLog.add(err(comK, comRef), err(comKF, comRef));
   }
-  EXPECT_LE(jLog.worstDouble, kTolDouble);
-  EXPECT_LE(jLog.worstFloat, kTolFloatKinematics);
+  for(const ErrorLog * l : {&jLog, &jqLog, &jpLog, &jkpLog})
+  {
+    EXPECT_LE(l->worstDouble, kTolDouble) << l->what;
+    EXPECT_LE(l->worstFloat, kTolFloatKinematics) << l->what;
+  }
   EXPECT_LE(cLog.worstDouble, kTolDouble);
   EXPECT_LE(cLog.worstFloat, kTolFloatKinematics);
   EXPECT_LE(ckLog.worstDouble, kTolDouble);
@@ -334,12 +352,13 @@ TEST_P(Generated, VelocitiesAccelerationsMomentum)
   rbd::CoMJacobian comJac(ref.mb());
   rbd::CentroidalMomentumMatrix cmm(ref.mb());
   ErrorLog vLog{"body_velocities"}, aLog{"body_accelerations"}, jdLog{"jacobian_dot_times_alpha"},
+      jdkLog{"jacobian_dot_times_alpha(body, kin, alpha)"},
       cjLog{"com_jacobian"}, cmmLog{"centroidal_momentum_matrix"};
   const int nv = g().nv, nb = g().nbodies;
   Eigen::VectorXd v(6 * nb), a(6 * nb);
   Eigen::VectorXf vF(6 * nb), aF(6 * nb);
-  Eigen::Matrix<double, 6, 1> jd;
-  Eigen::Matrix<float, 6, 1> jdF;
+  Eigen::Matrix<double, 6, 1> jd, jdk;
+  Eigen::Matrix<float, 6, 1> jdF, jdkF;
   Eigen::MatrixXd CJ(3, nv), A(6, nv);
   Eigen::MatrixXf CJF(3, nv), AF(6, nv);
   for(int s = 0; s < kStates / 4; ++s)
@@ -362,6 +381,9 @@ TEST_P(Generated, VelocitiesAccelerationsMomentum)
       g().f.jacobianDotTimesAlpha(i, qf.data(), alf.data(), jdF.data());
       const Eigen::Matrix<double, 6, 1> jdRef = jacs[k].normalAcceleration(ref.mb(), ref.mbc).vector();
       jdLog.add(err(jd, jdRef), err(jdF, jdRef));
+      g().d.jacobianDotTimesAlphaKin(i, q.data(), al.data(), jdk.data());
+      g().f.jacobianDotTimesAlphaKin(i, qf.data(), alf.data(), jdkF.data());
+      jdkLog.add(err(jdk, jdRef), err(jdkF, jdRef));
     }
     vLog.add(err(v, vRef), err(vF, vRef));
     aLog.add(err(a, aRef), err(aF, aRef));
@@ -374,7 +396,7 @@ TEST_P(Generated, VelocitiesAccelerationsMomentum)
     cmm.computeMatrix(ref.mb(), ref.mbc, rbd::computeCoM(ref.mb(), ref.mbc));
     cmmLog.add(err(A, cmm.matrix()), err(AF, cmm.matrix()));
   }
-  for(const ErrorLog * l : {&vLog, &aLog, &jdLog, &cjLog, &cmmLog})
+  for(const ErrorLog * l : {&vLog, &aLog, &jdLog, &jdkLog, &cjLog, &cmmLog})
   {
     EXPECT_LE(l->worstDouble, kTolDouble) << l->what;
     EXPECT_LE(l->worstFloat, kTolFloatDynamics) << l->what;
@@ -387,6 +409,7 @@ TEST_P(Generated, NoHeapAllocation)
   rbdtest::Rng rng(5);
   ref.sample(rng);
   const Eigen::VectorXd q = ref.q(), a = ref.alpha(), ad = ref.alphaD();
+  const Eigen::Vector3d point(0.1, -0.2, 0.3);
   const int nv = g().nv, nb = g().nbodies;
   Eigen::VectorXd out(std::max(12 * nb, 6 * nv) + nv * nv), fext = Eigen::VectorXd::Zero(6 * nb);
   long count = 0;
@@ -402,6 +425,10 @@ TEST_P(Generated, NoHeapAllocation)
     g().d.massMatrix(q.data(), out.data());
     if(g().d.forwardDynamics) g().d.forwardDynamics(q.data(), a.data(), ad.data(), out.data());
     g().d.jacobian(nb - 1, q.data(), out.data());
+    g().d.jacobianQ(nb - 1, q.data(), out.data());
+    g().d.jacobianPoint(nb - 1, q.data(), point.data(), out.data());
+    g().d.jacobianKinPoint(nb - 1, q.data(), point.data(), out.data());
+    g().d.jacobianDotTimesAlphaKin(nb - 1, q.data(), a.data(), out.data());
     g().d.centerOfMass(q.data(), out.data());
     g().d.centerOfMassKin(q.data(), out.data());
     g().d.bodyVelocities(q.data(), a.data(), out.data());

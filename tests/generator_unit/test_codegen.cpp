@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "codegen/Expr.h"
-#include "emit/Kernels.h"
+#include "passes/JointKernels.h"
 #include "emit/Template.h"
 #include "model/RobotModel.h"
 #include "util/Sha256.h"
@@ -94,7 +94,7 @@ TEST(Kernels, RevoluteAboutZIsSpecialised)
   mj.nq = mj.nv = 1;
   mj.tag = "j0";
   Block b;
-  const emit::JointKernel K = emit::emitJointKernel(b, mj, "q");
+  const passes::JointKernel K = passes::emitJointKernel(b, mj, "q");
   for(int i = 0; i < 3; ++i)
   {
     EXPECT_TRUE(K.Xj.r[i].isZero());
@@ -116,7 +116,7 @@ TEST(Kernels, GeneralAxisUsesEveryEntry)
   mj.nq = mj.nv = 1;
   mj.tag = "j0";
   Block b;
-  const emit::JointKernel K = emit::emitJointKernel(b, mj, "q");
+  const passes::JointKernel K = passes::emitJointKernel(b, mj, "q");
   for(int r = 0; r < 3; ++r)
     for(int c = 0; c < 3; ++c) EXPECT_FALSE(K.Xj.E(r, c).isConst());
 }

@@ -9,6 +9,7 @@
 
 #include "../codegen/Expr.h"
 #include "../model/RobotModel.h"
+#include "../passes/JointKernels.h"
 
 namespace rbdgen::emit
 {
@@ -62,8 +63,15 @@ std::vector<std::vector<cg::Scalar>> emitMassMatrix(cg::Block & b, const RobotMo
 /// Reads q, alpha, tau; fills `alphaD` (articulated-body algorithm).
 EmittedBody abaBody(const RobotModel & rm);
 
-/// Reads `kin` (Kinematics<S>) and `b` (Body); fills `J` (6 x nv, world axes at the link origin).
+/// The columns of joint mj (world axes, at the world point p) into `J`, given its world pose X0:
+/// [R s_w; R s_v + (R s_w) x (p - o)], R = E_0^T, o = X0's origin.
+void writePointColumns(cg::Block & b, const MovingJoint & mj, const passes::JointKernel & K, const cg::Xform & X0,
+                       const cg::Vec3 & p);
+/// Reads `kin` (Kinematics<S>) and `body` (Body); fills `J` (6 x nv, world axes at the link origin).
 EmittedBody jacobianBody(const RobotModel & rm);
+/// Reads `body`, q (and `point`, link coordinates, when withPoint); fills `J` (6 x nv, world axes at
+/// the link origin or the point) computing only the link's support path.
+EmittedBody jacobianFromConfigBody(const RobotModel & rm, bool withPoint);
 /// Reads `kin`; returns the centre of mass in world coordinates in `com`.
 EmittedBody centerOfMassBody(const RobotModel & rm);
 /// Reads q; returns the centre of mass in `com` (joint frames only, no link poses).
@@ -73,8 +81,10 @@ EmittedBody centerOfMassFromConfigBody(const RobotModel & rm);
 EmittedBody bodyVelocitiesBody(const RobotModel & rm);
 /// Reads q, alpha, alphaD; fills `res[b]` (link accelerations without gravity, link coordinates).
 EmittedBody bodyAccelerationsBody(const RobotModel & rm);
-/// Reads `body`, q, alpha; fills `res` (Jdot alpha at the link origin, world axes).
+/// Reads `body`, `kin`, alpha; fills `res` (Jdot alpha at the link origin, world axes).
 EmittedBody jacobianDotTimesAlphaBody(const RobotModel & rm);
+/// Reads `body`, q, alpha; fills `res` as above, computing only the link's support path.
+EmittedBody jacobianDotTimesAlphaFromConfigBody(const RobotModel & rm);
 /// Reads `kin`; fills `J` (3 x nv CoM Jacobian).
 EmittedBody comJacobianBody(const RobotModel & rm);
 /// Reads q; fills `A` (6 x nv centroidal momentum matrix, [angular about the CoM; linear]).

@@ -3,11 +3,15 @@
 // requested outputs. Whatever the scene disables is never emitted.
 #include <fmt/format.h>
 
-#include "Kernels.h"
+#include "../passes/BackwardForce.h"
+#include "../passes/CompositeInertia.h"
+#include "Outputs.h"
 #include "SceneEffects.h"
 
 namespace rbdgen::emit
 {
+
+using namespace rbdgen::passes;
 
 bool SceneEffects::anyNonZero(const std::vector<double> & v) const
 {
@@ -18,23 +22,6 @@ bool SceneEffects::anyNonZero(const std::vector<double> & v) const
 
 namespace
 {
-
-// World poses along the path of moving joint `owner` only (others left identity).
-std::vector<Xform> emitPathPoses(Block & b, const RobotModel & rm, int owner, std::vector<JointKernel> & K)
-{
-  std::vector<Xform> X0(rm.joints.size(), Xform::identity());
-  K.assign(rm.joints.size(), JointKernel{});
-  for(int k : rm.path(owner))
-  {
-    const auto kk = static_cast<std::size_t>(k);
-    const MovingJoint & mj = rm.joints[kk];
-    K[kk] = emitJointKernel(b, mj, "q");
-    const Xform Xt = constantXform(mj.Xt);
-    const Xform X_0_t = mj.parent < 0 ? Xt : compose(b, Xt, X0[static_cast<std::size_t>(mj.parent)], mj.tag + "_X0t");
-    X0[kk] = compose(b, K[kk].Xj, X_0_t, mj.tag + "_X0");
-  }
-  return X0;
-}
 
 // The contact point in its owner's body frame (constant): X_owner_link^-1 applied to the point.
 Vec3 contactPointInOwner(const RobotModel & rm, const SceneContact & c)
@@ -79,49 +66,24 @@ void emitPointMotion(Block & b, const Xform & X0, const Motion & v, const Vec3 &
 EmittedBody sceneRneaBody(const RobotModel & rm, const SceneEffects & fx, bool withAlphaD)
 {
   Block b;
-  const auto K = emitKernels(b, rm, "q");
+  PassContext ctx(b, rm);
   const bool contacts = !fx.contacts.empty(), wrenches = !fx.wrenchBodies.empty();
-  std::vector<Xform> X0;
-  if(contacts || wrenches) X0 = emitWorldPoses(b, rm, K);
-  const bool needV = fx.velocityTerms || contacts; // contact point velocities need v
-  const std::size_t n = rm.joints.size();
-  std::vector<Motion> v(n, Motion::zero()), a(n);
-  std::vector<Force> f(n);
-  // a_0 = [0; -g]: gravity as a fictitious acceleration of the world (RBDyn).
-  Motion a0 = Motion::zero();
-  if(fx.gravity)
-    for(int c = 0; c < 3; ++c) a0.v[c] = Scalar::constant(-(*fx.gravity)[c]);
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    const MovingJoint & mj = rm.joints[k];
-    const std::string t = mj.tag;
-    const auto p = static_cast<std::size_t>(mj.parent);
-    b.comment(fmt::format("{} forward pass: v = X_p_i v_p + S alpha, a = X_p_i a_p + S alphaD{}", t,
-                          fx.velocityTerms ? " + v x S alpha" : ""));
-    const Motion vJ = needV ? jointMotion(b, K[k], "alpha", mj.vIndex, t + "_vJ") : Motion::zero();
-    if(needV) v[k] = add(b, toChild(b, mj, K[k], mj.parent < 0 ? Motion::zero() : v[p], t + "_Xv"), vJ, t + "_v");
-    const Motion aJ = withAlphaD ? jointMotion(b, K[k], "alphaD", mj.vIndex, t + "_aJ") : Motion::zero();
-    a[k] = add(b, toChild(b, mj, K[k], mj.parent < 0 ? a0 : a[p], t + "_Xa"), aJ, t + "_aa");
-    const Inertia I = constantInertia(mj.inertia.mass(), mj.inertia.momentum(), mj.inertia.inertia());
-    // f = I a (+ v x* I v)
-    if(fx.velocityTerms) a[k] = add(b, a[k], cross(b, v[k], vJ, t + "_vxvJ"), t + "_a");
-    f[k] = apply(b, I, a[k], t + "_Ia");
-    if(fx.velocityTerms) f[k] = add(b, f[k], crossDual(b, v[k], apply(b, I, v[k], t + "_Iv"), t + "_vxIv"), t + "_f");
-  }
+  MotionRequest req;
+  req.poses = contacts || wrenches;
+  req.velocity = fx.velocityTerms || contacts; // contact point velocities need v
+  req.acceleration = true;
+  req.alphaD = withAlphaD;
+  req.velocityProducts = fx.velocityTerms;
+  req.gravity = fx.gravity;
+  const MotionState m = forwardMotion(ctx, req, ctx.allJoints());
+  std::vector<Force> f = inertialForces(ctx, m, fx.velocityTerms, ctx.allJoints());
   for(std::size_t w = 0; w < fx.wrenchBodies.size(); ++w)
   {
-    const int o = rm.bodies[static_cast<std::size_t>(fx.wrenchBodies[w])].owner;
-    if(o < 0) continue; // a wrench on a link that never moves does nothing
+    const int body = fx.wrenchBodies[w];
     b.comment(fmt::format("wrench {} on '{}': f -= X_0_i^* w (world coordinates at the world origin)", w,
-                          rm.bodies[static_cast<std::size_t>(fx.wrenchBodies[w])].name));
-    Force fe;
-    for(int c = 0; c < 3; ++c)
-    {
-      fe.n[c] = Scalar::var(fmt::format("wrenches[{}][{}]", w, c));
-      fe.f[c] = Scalar::var(fmt::format("wrenches[{}][{}]", w, c + 3));
-    }
-    const auto ko = static_cast<std::size_t>(o);
-    f[ko] = sub(b, f[ko], dualApply(b, X0[ko], fe, fmt::format("w{}_b", w)), rm.joints[ko].tag + "_fw");
+                          rm.bodies[static_cast<std::size_t>(body)].name));
+    const std::string slot = fmt::format("wrenches[{}]", w);
+    subtractWorldWrench(ctx, f, m, body, {vec3Var(slot, 0), vec3Var(slot, 3)}, fmt::format("w{}_b", w));
   }
   for(std::size_t c = 0; c < fx.contacts.size(); ++c)
   {
@@ -133,16 +95,11 @@ EmittedBody sceneRneaBody(const RobotModel & rm, const SceneEffects & fx, bool w
     b.comment(fmt::format("contact '{}': world force fc at point p (owner frame): f -= [p x E fc; E fc]", sc.name));
     const Vec3 p = contactPointInOwner(rm, sc);
     Vec3 pos, vel;
-    emitPointMotion(b, X0[ko], v[ko], p, pos, vel, h);
-    const Vec3 fc = emitContactForce(b, fx, pos, vel, h);
-    const Vec3 fb = mul(b, X0[ko].E, fc, h + "_fb");
-    f[ko] = sub(b, f[ko], Force{cross(b, p, fb, h + "_nb"), fb}, rm.joints[ko].tag + "_fc");
+    emitPointMotion(b, m.X0[ko], m.v[ko], p, pos, vel, h);
+    subtractPointForce(ctx, f, m, o, p, emitContactForce(b, fx, pos, vel, h), h);
   }
-  for(std::size_t k = n; k-- > 0;)
-  {
-    const MovingJoint & mj = rm.joints[k];
-    b.comment(fmt::format("{} backward pass: tau = S^T f, f_p += X_p_i^T f", mj.tag));
-    const auto tau = projectForce(b, K[k], f[k], mj.tag + "_tau");
+  backwardForces(ctx, f, [&](int k, const std::vector<Scalar> & tau) {
+    const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
     for(int d = 0; d < mj.nv; ++d)
     {
       const int i = mj.vIndex + d;
@@ -159,29 +116,15 @@ EmittedBody sceneRneaBody(const RobotModel & rm, const SceneEffects & fx, bool w
                                          fmt::format("fr{}", i))}});
       b.line(fmt::format("tau[{}] = {};", i, Block::text(terms)));
     }
-    if(mj.parent >= 0)
-    {
-      const auto p = static_cast<std::size_t>(mj.parent);
-      f[p] = add(b, f[p], toParent(b, mj, K[k], f[k], mj.tag + "_fp"), rm.joints[p].tag + "_f");
-    }
-  }
+  });
   return finish(b);
 }
 
 EmittedBody contactForcesBody(const RobotModel & rm, const SceneEffects & fx)
 {
   Block b;
-  const auto K = emitKernels(b, rm, "q");
-  const auto X0 = emitWorldPoses(b, rm, K);
-  const std::size_t n = rm.joints.size();
-  std::vector<Motion> v(n, Motion::zero());
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    const MovingJoint & mj = rm.joints[k];
-    const Motion vJ = jointMotion(b, K[k], "alpha", mj.vIndex, mj.tag + "_vJ");
-    const Motion vp = mj.parent < 0 ? Motion::zero() : v[static_cast<std::size_t>(mj.parent)];
-    v[k] = add(b, toChild(b, mj, K[k], vp, mj.tag + "_Xv"), vJ, mj.tag + "_v");
-  }
+  PassContext ctx(b, rm);
+  const MotionState m = forwardMotion(ctx, MotionRequest::make(true, true, false), ctx.allJoints());
   for(std::size_t c = 0; c < fx.contacts.size(); ++c)
   {
     const SceneContact & sc = fx.contacts[c];
@@ -190,7 +133,7 @@ EmittedBody contactForcesBody(const RobotModel & rm, const SceneEffects & fx)
     b.comment(fmt::format("contact '{}'", sc.name));
     const Vec3 p = contactPointInOwner(rm, sc);
     Vec3 pos = p, vel = Vec3::zero(); // a static body: the point is fixed in the world
-    if(o >= 0) emitPointMotion(b, X0[static_cast<std::size_t>(o)], v[static_cast<std::size_t>(o)], p, pos, vel, h);
+    if(o >= 0) emitPointMotion(b, m.X0[static_cast<std::size_t>(o)], m.v[static_cast<std::size_t>(o)], p, pos, vel, h);
     const Vec3 fc = emitContactForce(b, fx, pos, vel, h);
     for(int i = 0; i < 3; ++i) b.line(fmt::format("res[{}][{}] = {};", c, i, Block::text(fc[i])));
   }
@@ -200,125 +143,44 @@ EmittedBody contactForcesBody(const RobotModel & rm, const SceneEffects & fx)
 EmittedBody linkPoseBody(const RobotModel & rm, int body)
 {
   Block b;
-  const BodyFrame & bf = rm.bodies[static_cast<std::size_t>(body)];
-  const Xform C = constantXform(bf.X_owner_link);
-  Xform X = C;
-  if(bf.owner >= 0)
-  {
-    std::vector<JointKernel> K;
-    const auto X0 = emitPathPoses(b, rm, bf.owner, K);
-    X = compose(b, C, X0[static_cast<std::size_t>(bf.owner)], "X0_" + bf.ident);
-  }
-  for(int r = 0; r < 3; ++r)
-    for(int c = 0; c < 3; ++c) b.line(fmt::format("res.rotation({}, {}) = {};", r, c, Block::text(X.E(r, c))));
-  for(int i = 0; i < 3; ++i) b.line(fmt::format("res.translation({}) = {};", i, Block::text(X.r[i])));
+  PassContext ctx(b, rm);
+  const int owner = rm.bodies[static_cast<std::size_t>(body)].owner;
+  const MotionState m = forwardMotion(ctx, MotionRequest::make(true, false, false), owner < 0 ? std::vector<int>{} : rm.path(owner));
+  writePose(b, "res", linkPose(ctx, m, body));
   return finish(b);
 }
 
 EmittedBody linkJacobianBody(const RobotModel & rm, int body)
 {
   Block b;
+  PassContext ctx(b, rm);
   const BodyFrame & bf = rm.bodies[static_cast<std::size_t>(body)];
   if(bf.owner < 0) return finish(b);
-  std::vector<JointKernel> K;
-  const auto X0 = emitPathPoses(b, rm, bf.owner, K);
-  const Xform Xl = compose(b, constantXform(bf.X_owner_link), X0[static_cast<std::size_t>(bf.owner)], "X0_link");
-  for(int k : rm.path(bf.owner))
-  {
-    const auto kk = static_cast<std::size_t>(k);
-    const MovingJoint & mj = rm.joints[kk];
-    const std::string h = "J_" + mj.tag;
-    const Vec3 po = sub(b, Xl.r, X0[kk].r, h + "_po");
-    for(int d = 0; d < mj.nv; ++d)
-    {
-      // column: [R s_w; R s_v + (R s_w) x (p - o_k)], R = E_0_k^T
-      const Motion & Sd = K[kk].S[static_cast<std::size_t>(d)];
-      const Vec3 w = tmul(b, X0[kk].E, Sd.w, fmt::format("{}_w{}", h, d));
-      const Vec3 vv = add(b, tmul(b, X0[kk].E, Sd.v, fmt::format("{}_Rv{}", h, d)), cross(b, w, po, fmt::format("{}_wxp{}", h, d)),
-                          fmt::format("{}_v{}", h, d));
-      for(int r = 0; r < 3; ++r)
-      {
-        if(!w[r].isZero()) b.line(fmt::format("J({}, {}) = {};", r, mj.vIndex + d, Block::text(w[r])));
-        if(!vv[r].isZero()) b.line(fmt::format("J({}, {}) = {};", r + 3, mj.vIndex + d, Block::text(vv[r])));
-      }
-    }
-  }
+  const std::vector<int> path = rm.path(bf.owner);
+  const MotionState m = forwardMotion(ctx, MotionRequest::make(true, false, false), path);
+  const Xform Xl = linkPose(ctx, m, body);
+  for(int k : path) writePointColumns(b, rm.joints[static_cast<std::size_t>(k)], ctx.kernel(k), m.X0[static_cast<std::size_t>(k)], Xl.r);
   return finish(b);
 }
-
-namespace
-{
-
-// Body velocities (body coordinates) and world poses of every moving joint.
-void emitVelocities(Block & b, const RobotModel & rm, std::vector<Xform> & X0, std::vector<Motion> & v)
-{
-  const auto K = emitKernels(b, rm, "q");
-  X0 = emitWorldPoses(b, rm, K);
-  v.assign(rm.joints.size(), Motion::zero());
-  for(std::size_t k = 0; k < rm.joints.size(); ++k)
-  {
-    const MovingJoint & mj = rm.joints[k];
-    const Motion vJ = jointMotion(b, K[k], "alpha", mj.vIndex, mj.tag + "_vJ");
-    const Motion vp = mj.parent < 0 ? Motion::zero() : v[static_cast<std::size_t>(mj.parent)];
-    v[k] = add(b, toChild(b, mj, K[k], vp, mj.tag + "_Xv"), vJ, mj.tag + "_v");
-  }
-}
-
-Inertia inertiaOf(const MovingJoint & mj)
-{
-  return constantInertia(mj.inertia.mass(), mj.inertia.momentum(), mj.inertia.inertia());
-}
-
-} // namespace
-
-namespace
-{
-
-// Sum over every link of m c (world), static ones included.
-Vec3 emitFirstMoments(Block & b, const RobotModel & rm, const std::vector<Xform> & X0)
-{
-  Vec3 moment = Vec3::constant(rm.staticMoment);
-  for(std::size_t k = 0; k < rm.joints.size(); ++k)
-  {
-    const MovingJoint & mj = rm.joints[k];
-    if(mj.inertia.mass() == 0.0) continue;
-    moment = add(b, moment, add(b, tmul(b, X0[k].E, Vec3::constant(mj.inertia.momentum()), mj.tag + "_h"),
-                                scale(b, Scalar::constant(mj.inertia.mass()), X0[k].r, mj.tag + "_mo"), mj.tag + "_mc"),
-                 mj.tag + "_sum");
-  }
-  return moment;
-}
-
-} // namespace
 
 EmittedBody centerOfMassQBody(const RobotModel & rm)
 {
-  Block b;
-  const auto K = emitKernels(b, rm, "q");
-  const auto X0 = emitWorldPoses(b, rm, K);
-  const Vec3 moment = emitFirstMoments(b, rm, X0);
-  const double invM = rm.totalMass > 0 ? 1.0 / rm.totalMass : 0.0;
-  for(int c = 0; c < 3; ++c)
-    b.line(fmt::format("com({}) = {};", c, Block::text(b.sum({Term{invM, {moment[c]}}}, fmt::format("com_{}", c)))));
-  return finish(b);
+  return centerOfMassFromConfigBody(rm);
 }
 
 EmittedBody centroidalMomentumBody(const RobotModel & rm)
 {
   Block b;
-  std::vector<Xform> X0;
-  std::vector<Motion> v;
-  emitVelocities(b, rm, X0, v);
-  // h_O = sum_k X_0_k^T (I_k v_k) (world axes, at the world origin); first moment for the CoM
+  PassContext ctx(b, rm);
+  const MotionState m = forwardMotion(ctx, MotionRequest::make(true, true, false), ctx.allJoints());
+  // h_O = sum_k X_0_k^T (I_k v_k) (world axes, at the world origin)
   Force hO = Force::zero();
   for(std::size_t k = 0; k < rm.joints.size(); ++k)
   {
     const MovingJoint & mj = rm.joints[k];
-    hO = add(b, hO, transApply(b, X0[k], apply(b, inertiaOf(mj), v[k], mj.tag + "_Iv"), mj.tag + "_hw"), mj.tag + "_hO");
+    hO = add(b, hO, transApply(b, m.X0[k], apply(b, bodyInertia(mj), m.v[k], mj.tag + "_Iv"), mj.tag + "_hw"), mj.tag + "_hO");
   }
-  const Vec3 moment = emitFirstMoments(b, rm, X0);
-  const double invM = rm.totalMass > 0 ? 1.0 / rm.totalMass : 0.0;
-  const Vec3 com = scale(b, Scalar::constant(invM), moment, "com");
+  const Vec3 com = centerOfMass(ctx, m.X0);
   b.comment("about the centre of mass: n_G = n_O - com x f");
   const Vec3 nG = sub(b, hO.n, cross(b, com, hO.f, "cxf"), "nG");
   for(int r = 0; r < 3; ++r)
@@ -332,9 +194,8 @@ EmittedBody centroidalMomentumBody(const RobotModel & rm)
 EmittedBody energyBody(const RobotModel & rm, const SceneEffects & fx, bool kinetic)
 {
   Block b;
-  std::vector<Xform> X0;
-  std::vector<Motion> v;
-  emitVelocities(b, rm, X0, v);
+  PassContext ctx(b, rm);
+  const MotionState m = forwardMotion(ctx, MotionRequest::make(!kinetic, kinetic, false), ctx.allJoints());
   if(kinetic)
   {
     b.comment(fx.hasArmature() ? "sum_k v_k^T I_k v_k / 2 + sum_i armature_i alpha_i^2 / 2" : "sum_k v_k^T I_k v_k / 2");
@@ -342,11 +203,11 @@ EmittedBody energyBody(const RobotModel & rm, const SceneEffects & fx, bool kine
     for(std::size_t k = 0; k < rm.joints.size(); ++k)
     {
       const MovingJoint & mj = rm.joints[k];
-      const Force Iv = apply(b, inertiaOf(mj), v[k], mj.tag + "_Iv");
+      const Force Iv = apply(b, bodyInertia(mj), m.v[k], mj.tag + "_Iv");
       for(int i = 0; i < 3; ++i)
       {
-        ek.push_back(Term{0.5, {v[k].w[i], Iv.n[i]}});
-        ek.push_back(Term{0.5, {v[k].v[i], Iv.f[i]}});
+        ek.push_back(Term{0.5, {m.v[k].w[i], Iv.n[i]}});
+        ek.push_back(Term{0.5, {m.v[k].v[i], Iv.f[i]}});
       }
     }
     for(std::size_t i = 0; i < fx.armature.size(); ++i)
@@ -359,7 +220,7 @@ EmittedBody energyBody(const RobotModel & rm, const SceneEffects & fx, bool kine
     return finish(b);
   }
   b.comment("-g . (sum of m c over every link, static ones included), world");
-  const Vec3 moment = emitFirstMoments(b, rm, X0);
+  const Vec3 moment = totalFirstMoment(ctx, m.X0);
   const Eigen::Vector3d g = fx.gravity ? *fx.gravity : Eigen::Vector3d::Zero();
   b.line("e = " + Block::text(b.sum({Term{-g[0], {moment[0]}}, Term{-g[1], {moment[1]}}, Term{-g[2], {moment[2]}}}, "potential")) + ";");
   return finish(b);

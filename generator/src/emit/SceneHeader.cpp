@@ -10,22 +10,15 @@
 
 #include <rbd/scene/Integrators.h>
 
-#include "../Generate.h"
-#include "Kernels.h"
+#include "../passes/JointKernels.h"
 #include "Template.h"
 
 namespace rbdgen::emit
 {
+
+using namespace rbdgen::passes;
 namespace
 {
-
-const std::string & templateText(const std::string & name)
-{
-  const auto & t = embeddedTemplates();
-  const auto it = t.find(name);
-  if(it == t.end()) throw std::logic_error("template " + name + " is not embedded");
-  return it->second;
-}
 
 std::string fill(const std::string & name, const std::map<std::string, bool> & flags,
                  const std::map<std::string, std::string> & values)

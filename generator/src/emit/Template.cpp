@@ -1,11 +1,20 @@
 #include "Template.h"
 
 #include <set>
+#include <stdexcept>
 #include <sstream>
 #include <vector>
 
 namespace rbdgen
 {
+
+const std::string & templateText(const std::string & name)
+{
+  const auto & t = embeddedTemplates();
+  const auto it = t.find(name);
+  if(it == t.end()) throw std::logic_error("template " + name + " is not embedded");
+  return it->second;
+}
 
 std::string fillTemplate(const std::string & text, const std::map<std::string, std::string> & values,
                          const std::string & templateName)

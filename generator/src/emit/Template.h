@@ -14,6 +14,12 @@ struct TemplateError : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
+/// Embedded templates, by file name (generated from templates/ at build time).
+const std::map<std::string, std::string> & embeddedTemplates();
+
+/// The text of template `name`; an error of the generator when it is not embedded.
+const std::string & templateText(const std::string & name);
+
 /// Replace every {{name}} in `text` (named `templateName` in errors) by values.at(name).
 std::string fillTemplate(const std::string & text, const std::map<std::string, std::string> & values,
                          const std::string & templateName);

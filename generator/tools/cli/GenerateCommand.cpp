@@ -6,7 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "../Generate.h"
+#include "Generate.h"
 #include "Command.h"
 #include "RobotOptions.h"
 

@@ -1,10 +1,10 @@
-#include "Kernels.h"
+#include "JointKernels.h"
 
 #include <cmath>
 
 #include <fmt/format.h>
 
-namespace rbdgen::emit
+namespace rbdgen::passes
 {
 
 Xform constantXform(const sva::PTransformd & X)
@@ -76,7 +76,7 @@ Motion constantMotion(const Eigen::Matrix<double, 6, 1> & s)
 
 } // namespace
 
-JointKernel emitJointKernel(Block & b, const MovingJoint & mj, const std::string & q)
+JointKernel emitJointKernel(Block & b, const MovingJoint & mj, const std::string & q, const AngleSinCos & angles)
 {
   const rbd::Joint & j = mj.joint;
   const std::string h = mj.tag;
@@ -85,6 +85,7 @@ JointKernel emitJointKernel(Block & b, const MovingJoint & mj, const std::string
   JointKernel K;
   K.Xj = Xform::identity();
   auto sincos = [&](int i) {
+    if(angles) return angles(i);
     const Scalar s = b.def(fmt::format("std::sin({})", qAt(q, i)), h + "_s");
     const Scalar c = b.def(fmt::format("std::cos({})", qAt(q, i)), h + "_c");
     return std::make_pair(s, c);
@@ -148,17 +149,6 @@ JointKernel emitJointKernel(Block & b, const MovingJoint & mj, const std::string
   return K;
 }
 
-std::vector<JointKernel> emitKernels(Block & b, const RobotModel & rm, const std::string & q)
-{
-  std::vector<JointKernel> K;
-  for(const MovingJoint & mj : rm.joints)
-  {
-    b.comment(fmt::format("{}: joint '{}' ({})", mj.tag, mj.name, describeJoint(mj)));
-    K.push_back(emitJointKernel(b, mj, q));
-  }
-  return K;
-}
-
 Motion toChild(Block & b, const MovingJoint & mj, const JointKernel & K, const Motion & m, const std::string & hint)
 {
   return apply(b, K.Xj, apply(b, constantXform(mj.Xt), m, hint + "_t"), hint);
@@ -167,19 +157,6 @@ Motion toChild(Block & b, const MovingJoint & mj, const JointKernel & K, const M
 Force toParent(Block & b, const MovingJoint & mj, const JointKernel & K, const Force & f, const std::string & hint)
 {
   return transApply(b, constantXform(mj.Xt), transApply(b, K.Xj, f, hint + "_j"), hint);
-}
-
-std::vector<Xform> emitWorldPoses(Block & b, const RobotModel & rm, const std::vector<JointKernel> & K)
-{
-  std::vector<Xform> X0;
-  for(std::size_t k = 0; k < rm.joints.size(); ++k)
-  {
-    const MovingJoint & mj = rm.joints[k];
-    const Xform Xt = constantXform(mj.Xt);
-    const Xform X_0_jt = mj.parent < 0 ? Xt : compose(b, Xt, X0[static_cast<std::size_t>(mj.parent)], mj.tag + "_X0t");
-    X0.push_back(compose(b, K[k].Xj, X_0_jt, mj.tag + "_X0"));
-  }
-  return X0;
 }
 
 Motion jointMotion(Block & b, const JointKernel & K, const std::string & v, int offset, const std::string & hint)
@@ -236,4 +213,4 @@ std::string describeJoint(const MovingJoint & mj)
   return s;
 }
 
-} // namespace rbdgen::emit
+} // namespace rbdgen::passes

@@ -9,8 +9,8 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "../Generate.h"
-#include "../emit/Template.h"
+#include "Generate.h"
+#include "emit/Template.h"
 
 #ifndef RBDGEN_CXX_COMPILER
 #define RBDGEN_CXX_COMPILER "c++"

@@ -1,0 +1,145 @@
+// Mass matrix (composite rigid-body algorithm: the composite-inertia pass, then each column's
+// force F = Ic S carried along the support path to the root) and forward dynamics by CRBA + a
+// tree-sparse L^T D L factorisation (Featherstone, RBDA 6.5).
+#include <fmt/format.h>
+
+#include "../passes/CompositeInertia.h"
+#include "Functions.h"
+
+namespace rbdgen::emit
+{
+
+using namespace rbdgen::passes;
+
+namespace
+{
+
+// Composite rigid-body algorithm on symbols: H (lower triangle, by dof index) from kernels.
+std::vector<std::vector<Scalar>> emitCrba(PassContext & ctx)
+{
+  Block & b = ctx.block();
+  const RobotModel & rm = ctx.model();
+  const std::size_t n = rm.joints.size();
+  const std::vector<Inertia> Ic = compositeInertias(ctx);
+  std::vector<std::vector<Scalar>> H(static_cast<std::size_t>(rm.nv),
+                                     std::vector<Scalar>(static_cast<std::size_t>(rm.nv), Scalar::constant(0)));
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    b.comment(fmt::format("{}: mass matrix columns, F = Ic S carried to the root", mj.tag));
+    for(int d = 0; d < mj.nv; ++d)
+    {
+      const std::string h = fmt::format("{}_F{}", mj.tag, d);
+      Force F = apply(b, Ic[k], ctx.kernel(static_cast<int>(k)).S[static_cast<std::size_t>(d)], h);
+      const int col = mj.vIndex + d;
+      // H_kk block (lower part: rows >= col)
+      const auto own = projectForce(b, ctx.kernel(static_cast<int>(k)), F, fmt::format("H_{}", col));
+      for(int e = d; e < mj.nv; ++e) H[static_cast<std::size_t>(mj.vIndex + e)][static_cast<std::size_t>(col)] = own[static_cast<std::size_t>(e)];
+      int j = static_cast<int>(k);
+      while(rm.joints[static_cast<std::size_t>(j)].parent >= 0)
+      {
+        const MovingJoint & mjj = rm.joints[static_cast<std::size_t>(j)];
+        F = toParent(b, mjj, ctx.kernel(j), F, fmt::format("{}_{}", h, mjj.tag));
+        j = mjj.parent;
+        const MovingJoint & mp = rm.joints[static_cast<std::size_t>(j)];
+        const auto Hp = projectForce(b, ctx.kernel(j), F, fmt::format("H_{}", col));
+        for(int e = 0; e < mp.nv; ++e) H[static_cast<std::size_t>(col)][static_cast<std::size_t>(mp.vIndex + e)] = Hp[static_cast<std::size_t>(e)];
+      }
+    }
+  }
+  return H;
+}
+
+// Parent of each dof in the dof tree (Featherstone's λ on dofs), -1 for a root dof.
+std::vector<int> dofParents(const RobotModel & rm)
+{
+  std::vector<int> lambda(static_cast<std::size_t>(rm.nv), -1);
+  for(const MovingJoint & mj : rm.joints)
+  {
+    const int first = mj.vIndex;
+    lambda[static_cast<std::size_t>(first)] =
+        mj.parent < 0 ? -1 : rm.joints[static_cast<std::size_t>(mj.parent)].vIndex + rm.joints[static_cast<std::size_t>(mj.parent)].nv - 1;
+    for(int d = 1; d < mj.nv; ++d) lambda[static_cast<std::size_t>(first + d)] = first + d - 1;
+  }
+  return lambda;
+}
+
+} // namespace
+
+std::vector<std::vector<Scalar>> emitMassMatrix(Block & b, const RobotModel & rm, const std::vector<double> & armature)
+{
+  PassContext ctx(b, rm);
+  const auto Hfull = emitCrba(ctx);
+  const auto nv = static_cast<std::size_t>(rm.nv);
+  // Symmetric view: L[r][c] for c <= r; H_ii += armature_i.
+  std::vector<std::vector<Scalar>> L(nv, std::vector<Scalar>(nv, Scalar::constant(0)));
+  for(std::size_t r = 0; r < nv; ++r)
+    for(std::size_t c = 0; c <= r; ++c) L[r][c] = Hfull[r][c].isZero() ? Hfull[c][r] : Hfull[r][c];
+  for(std::size_t i = 0; i < armature.size() && i < nv; ++i)
+    if(armature[i] != 0.0) L[i][i] = b.sum({Term{1.0, {L[i][i]}}, Term{armature[i], {}}}, fmt::format("Ha{}", i));
+  return L;
+}
+
+EmittedBody massMatrixBody(const RobotModel & rm, const std::vector<double> & armature)
+{
+  Block b;
+  const auto L = emitMassMatrix(b, rm, armature);
+  for(int r = 0; r < rm.nv; ++r)
+    for(int c = 0; c <= r; ++c)
+    {
+      const Scalar & x = L[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
+      if(x.isZero()) continue;
+      b.line(fmt::format("H({}, {}) = {};", r, c, Block::text(x)));
+      if(r != c) b.line(fmt::format("H({}, {}) = {};", c, r, Block::text(x)));
+    }
+  return finish(b);
+}
+
+EmittedBody forwardDynamicsBody(const RobotModel & rm, const FdOptions & opt)
+{
+  Block b;
+  const auto nv = static_cast<std::size_t>(rm.nv);
+  std::vector<std::vector<Scalar>> L = emitMassMatrix(b, rm, opt.armature);
+  // Right-hand side: tau - C.
+  std::vector<Scalar> x(nv);
+  if(opt.biasCall.empty())
+    for(std::size_t i = 0; i < nv; ++i) x[i] = Scalar::var(fmt::format("tau[{}]", i));
+  else
+  {
+    b.line("const Tangent<S> C = " + opt.biasCall + ";");
+    for(std::size_t i = 0; i < nv; ++i) x[i] = b.sum({Term{1.0, {Scalar::var(fmt::format("tau[{}]", i))}}, Term{-1.0, {Scalar::var(fmt::format("C[{}]", i))}}}, fmt::format("x{}", i));
+  }
+  const std::vector<int> lambda = dofParents(rm);
+  b.comment("tree-sparse factorisation H = L^T D L (Featherstone, RBDA 6.5), in place on the lower triangle");
+  std::vector<Scalar> invD(nv);
+  for(std::size_t k = nv; k-- > 0;)
+  {
+    invD[k] = b.def("S(1) / " + Block::text(L[k][k]), fmt::format("invD{}", k));
+    for(int i = lambda[k]; i >= 0; i = lambda[static_cast<std::size_t>(i)])
+    {
+      const auto ii = static_cast<std::size_t>(i);
+      const Scalar a = mul(b, L[k][ii], invD[k], fmt::format("L{}_{}", k, i));
+      for(int j = i; j >= 0; j = lambda[static_cast<std::size_t>(j)])
+      {
+        const auto jj = static_cast<std::size_t>(j);
+        L[ii][jj] = b.sum({Term{1.0, {L[ii][jj]}}, Term{-1.0, {L[k][jj], a}}}, fmt::format("H{}_{}", i, j));
+      }
+      L[k][ii] = a;
+    }
+  }
+  b.comment("solve L^T D L alphaD = tau - C");
+  for(std::size_t i = nv; i-- > 0;)
+    for(int j = lambda[i]; j >= 0; j = lambda[static_cast<std::size_t>(j)])
+    {
+      const auto jj = static_cast<std::size_t>(j);
+      x[jj] = b.sum({Term{1.0, {x[jj]}}, Term{-1.0, {L[i][jj], x[i]}}}, fmt::format("x{}", j));
+    }
+  for(std::size_t i = 0; i < nv; ++i) x[i] = mul(b, x[i], invD[i], fmt::format("x{}", i));
+  for(std::size_t i = 0; i < nv; ++i)
+    for(int j = lambda[i]; j >= 0; j = lambda[static_cast<std::size_t>(j)])
+      x[i] = b.sum({Term{1.0, {x[i]}}, Term{-1.0, {L[i][static_cast<std::size_t>(j)], x[static_cast<std::size_t>(j)]}}}, fmt::format("x{}", i));
+  for(std::size_t i = 0; i < nv; ++i) b.line(fmt::format("alphaD[{}] = {};", i, Block::text(x[i])));
+  return finish(b);
+}
+
+} // namespace rbdgen::emit

@@ -1,0 +1,78 @@
+#include "BackwardForce.h"
+
+#include <fmt/format.h>
+
+namespace rbdgen::passes
+{
+
+Inertia bodyInertia(const MovingJoint & mj)
+{
+  return constantInertia(mj.inertia.mass(), mj.inertia.momentum(), mj.inertia.inertia());
+}
+
+std::vector<Force> inertialForces(PassContext & ctx, const MotionState & m, bool velocityProducts,
+                                  const std::vector<int> & joints)
+{
+  Block & b = ctx.block();
+  std::vector<Force> f(ctx.model().joints.size(), Force::zero());
+  for(int k : joints)
+  {
+    const auto kk = static_cast<std::size_t>(k);
+    const MovingJoint & mj = ctx.joint(k);
+    const std::string & t = mj.tag;
+    const Inertia I = bodyInertia(mj);
+    b.comment(fmt::format("{}: f = I a{}", t, velocityProducts ? " + v x* I v" : ""));
+    f[kk] = apply(b, I, m.a[kk], t + "_Ia");
+    if(velocityProducts) f[kk] = add(b, f[kk], crossDual(b, m.v[kk], apply(b, I, m.v[kk], t + "_Iv"), t + "_vxIv"), t + "_f");
+  }
+  return f;
+}
+
+void subtractWorldWrench(PassContext & ctx, std::vector<Force> & f, const MotionState & m, int body, const Force & w,
+                         const std::string & hint)
+{
+  const int o = ctx.model().bodies[static_cast<std::size_t>(body)].owner;
+  if(o < 0) return;
+  const auto ko = static_cast<std::size_t>(o);
+  Block & b = ctx.block();
+  f[ko] = sub(b, f[ko], dualApply(b, m.X0[ko], w, hint), ctx.joint(o).tag + "_fe");
+}
+
+void subtractPointForce(PassContext & ctx, std::vector<Force> & f, const MotionState & m, int owner, const Vec3 & p,
+                        const Vec3 & fc, const std::string & hint)
+{
+  Block & b = ctx.block();
+  const auto ko = static_cast<std::size_t>(owner);
+  const Vec3 fb = mul(b, m.X0[ko].E, fc, hint + "_fb");
+  f[ko] = sub(b, f[ko], Force{cross(b, p, fb, hint + "_nb"), fb}, ctx.joint(owner).tag + "_fc");
+}
+
+void backwardForces(PassContext & ctx, std::vector<Force> & f,
+                    const std::function<void(int k, const std::vector<Scalar> & tau)> & onTau)
+{
+  Block & b = ctx.block();
+  for(std::size_t k = f.size(); k-- > 0;)
+  {
+    const int kk = static_cast<int>(k);
+    const MovingJoint & mj = ctx.joint(kk);
+    const JointKernel & K = ctx.kernel(kk);
+    b.comment(fmt::format("{} backward: tau = S^T f, f_p += X_p_i^T f", mj.tag));
+    onTau(kk, projectForce(b, K, f[k], mj.tag + "_tau"));
+    if(mj.parent >= 0)
+    {
+      const auto p = static_cast<std::size_t>(mj.parent);
+      f[p] = add(b, f[p], toParent(b, mj, K, f[k], mj.tag + "_fp"), ctx.joint(mj.parent).tag + "_f");
+    }
+  }
+}
+
+std::function<void(int, const std::vector<Scalar> &)> writeTorques(PassContext & ctx, const std::string & dst)
+{
+  return [&ctx, dst](int k, const std::vector<Scalar> & tau) {
+    const MovingJoint & mj = ctx.joint(k);
+    for(int d = 0; d < mj.nv; ++d)
+      ctx.block().line(fmt::format("{}[{}] = {};", dst, mj.vIndex + d, Block::text(tau[static_cast<std::size_t>(d)])));
+  };
+}
+
+} // namespace rbdgen::passes

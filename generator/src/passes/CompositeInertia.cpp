@@ -1,0 +1,54 @@
+#include "CompositeInertia.h"
+
+#include <fmt/format.h>
+
+#include "BackwardForce.h"
+
+namespace rbdgen::passes
+{
+
+std::vector<Inertia> compositeInertias(PassContext & ctx)
+{
+  Block & b = ctx.block();
+  const RobotModel & rm = ctx.model();
+  std::vector<Inertia> Ic;
+  for(const MovingJoint & mj : rm.joints) Ic.push_back(bodyInertia(mj));
+  for(std::size_t k = rm.joints.size(); k-- > 0;)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    if(mj.parent < 0) continue;
+    b.comment(fmt::format("{}: composite inertia into its parent, Ic_p += X_p_i^T Ic_i X_p_i", mj.tag));
+    const Inertia Ij = transApply(b, ctx.kernel(static_cast<int>(k)).Xj, Ic[k], mj.tag + "_Icj");
+    const Inertia Ip = transApply(b, constantXform(mj.Xt), Ij, mj.tag + "_Icp");
+    const auto p = static_cast<std::size_t>(mj.parent);
+    Ic[p] = add(b, Ic[p], Ip, rm.joints[p].tag + "_Ic");
+  }
+  return Ic;
+}
+
+Vec3 firstMoment(PassContext & ctx, int k, const Xform & X0)
+{
+  Block & b = ctx.block();
+  const MovingJoint & mj = ctx.joint(k);
+  return add(b, tmul(b, X0.E, Vec3::constant(mj.inertia.momentum()), mj.tag + "_h"),
+             scale(b, Scalar::constant(mj.inertia.mass()), X0.r, mj.tag + "_mo"), mj.tag + "_mc");
+}
+
+Vec3 totalFirstMoment(PassContext & ctx, const std::vector<Xform> & X0)
+{
+  const RobotModel & rm = ctx.model();
+  Vec3 sum = Vec3::constant(rm.staticMoment);
+  for(std::size_t k = 0; k < rm.joints.size(); ++k)
+    if(rm.joints[k].inertia.mass() != 0.0)
+      sum = add(ctx.block(), sum, firstMoment(ctx, static_cast<int>(k), X0[k]), rm.joints[k].tag + "_sum");
+  return sum;
+}
+
+Vec3 centerOfMass(PassContext & ctx, const std::vector<Xform> & X0)
+{
+  const double M = ctx.model().totalMass;
+  ctx.block().comment("com = (sum_k m_k o_k + E_0_k^T h_k + static first moment) / M");
+  return scale(ctx.block(), Scalar::constant(M > 0 ? 1.0 / M : 0.0), totalFirstMoment(ctx, X0), "com");
+}
+
+} // namespace rbdgen::passes

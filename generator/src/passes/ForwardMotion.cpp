@@ -1,0 +1,50 @@
+#include "ForwardMotion.h"
+
+namespace rbdgen::passes
+{
+
+MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const std::vector<int> & joints)
+{
+  Block & b = ctx.block();
+  const std::size_t n = ctx.model().joints.size();
+  MotionState m{std::vector<Xform>(n, Xform::identity()), std::vector<Motion>(n, Motion::zero()),
+                std::vector<Motion>(n, Motion::zero()), std::vector<Motion>(n, Motion::zero())};
+  Motion a0 = Motion::zero();
+  if(req.gravity)
+    for(int c = 0; c < 3; ++c) a0.v[c] = Scalar::constant(-(*req.gravity)[c]);
+  for(int k : joints)
+  {
+    const auto kk = static_cast<std::size_t>(k);
+    const MovingJoint & mj = ctx.joint(k);
+    const JointKernel & K = ctx.kernel(k);
+    const std::string & t = mj.tag;
+    const bool root = mj.parent < 0;
+    const auto p = static_cast<std::size_t>(root ? 0 : mj.parent);
+    if(req.poses)
+    {
+      const Xform Xt = constantXform(mj.Xt);
+      m.X0[kk] = compose(b, K.Xj, root ? Xt : compose(b, Xt, m.X0[p], t + "_X0t"), t + "_X0");
+    }
+    if(req.velocity)
+    {
+      m.vJ[kk] = jointMotion(b, K, "alpha", mj.vIndex, t + "_vJ");
+      m.v[kk] = add(b, toChild(b, mj, K, root ? Motion::zero() : m.v[p], t + "_Xv"), m.vJ[kk], t + "_v");
+    }
+    if(req.acceleration)
+    {
+      const Motion aJ = req.alphaD ? jointMotion(b, K, "alphaD", mj.vIndex, t + "_aJ") : Motion::zero();
+      m.a[kk] = add(b, toChild(b, mj, K, root ? a0 : m.a[p], t + "_Xa"), aJ, t + "_aa");
+      if(req.velocity && req.velocityProducts) m.a[kk] = add(b, m.a[kk], cross(b, m.v[kk], m.vJ[kk], t + "_vxvJ"), t + "_a");
+    }
+  }
+  return m;
+}
+
+Xform linkPose(PassContext & ctx, const MotionState & m, int body)
+{
+  const BodyFrame & bf = ctx.model().bodies[static_cast<std::size_t>(body)];
+  const Xform C = constantXform(bf.X_owner_link);
+  return bf.owner < 0 ? C : compose(ctx.block(), C, m.X0[static_cast<std::size_t>(bf.owner)], "X0_" + bf.ident);
+}
+
+} // namespace rbdgen::passes

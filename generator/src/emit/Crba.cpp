@@ -89,8 +89,8 @@ EmittedBody massMatrixBody(const RobotModel & rm, const std::vector<double> & ar
     {
       const Scalar & x = L[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
       if(x.isZero()) continue;
-      b.line(fmt::format("H({}, {}) = {};", r, c, Block::text(x)));
-      if(r != c) b.line(fmt::format("H({}, {}) = {};", c, r, Block::text(x)));
+      b.line(r == c ? fmt::format("H({}, {}) = {};", r, c, Block::text(x))
+                    : fmt::format("H({}, {}) = H({}, {}) = {};", r, c, c, r, Block::text(x)));
     }
   return finish(b);
 }

@@ -5,20 +5,31 @@
 namespace rbdgen::emit
 {
 
+namespace
+{
+
+std::string joined(std::initializer_list<const Vec3 *> vs)
+{
+  std::string s;
+  for(const Vec3 * v : vs)
+    for(int i = 0; i < 3; ++i) s += (s.empty() ? "" : ", ") + Block::text((*v)[i]);
+  return s;
+}
+
+} // namespace
+
 void writePose(Block & b, const std::string & dst, const Xform & X)
 {
+  Vec3 rows[3];
   for(int r = 0; r < 3; ++r)
-    for(int c = 0; c < 3; ++c) b.line(fmt::format("{}.rotation({}, {}) = {};", dst, r, c, Block::text(X.E(r, c))));
-  for(int i = 0; i < 3; ++i) b.line(fmt::format("{}.translation({}) = {};", dst, i, Block::text(X.r[i])));
+    for(int c = 0; c < 3; ++c) rows[r][c] = X.E(r, c);
+  b.line(fmt::format("{}.rotation << {};", dst, joined({&rows[0], &rows[1], &rows[2]})));
+  b.line(fmt::format("{}.translation << {};", dst, joined({&X.r})));
 }
 
 void writeMotion(Block & b, const std::string & dst, const Motion & m)
 {
-  for(int i = 0; i < 3; ++i)
-  {
-    b.line(fmt::format("{}[{}] = {};", dst, i, Block::text(m.w[i])));
-    b.line(fmt::format("{}[{}] = {};", dst, i + 3, Block::text(m.v[i])));
-  }
+  b.line(fmt::format("{} << {};", dst, joined({&m.w, &m.v})));
 }
 
 void writeColumn(Block & b, const std::string & dst, int col, const Vec3 & top, const Vec3 & bottom)

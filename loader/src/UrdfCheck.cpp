@@ -11,6 +11,8 @@
 #include <Eigen/Eigenvalues>
 #include <tinyxml2.h>
 
+#include <rbd/MultiBodyGraph.h>
+
 namespace rbd
 {
 namespace parsers
@@ -68,7 +70,8 @@ public:
   {
     for(unsigned char c : name)
       if(c < 0x20 || c == 0x7f) fail(element, name, "name contains a control character" + at(e));
-    if(element == "joint" && name == "Root") fail(element, name, "the name 'Root' is reserved for the base joint" + at(e));
+    if(element == "joint" && name == rbd::rootJointName)
+      fail(element, name, std::string("the name '") + rbd::rootJointName + "' is reserved for the base joint" + at(e));
   }
 
   /// n finite numbers from attribute `attr` of e (absent: the defaults, when allowed).

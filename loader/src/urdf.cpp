@@ -194,7 +194,7 @@ ParserResult fromUrdfString(const std::string & xml, const ParserOptions & opt, 
   // Limits, dynamics and mimics of the joints kept in the model.
   for(const rbd::Joint & j : res.mb.joints())
   {
-    if(j.name() == "Root") continue;
+    if(j.name() == rootJointName) continue;
     const urdf::Joint & uj = *model->joints_.at(j.name());
     if(j.type() != rbd::Joint::Fixed) addLimits(uj, j, res.limits);
     if(uj.dynamics) res.dynamics[j.name()] = JointDynamics{uj.dynamics->damping, uj.dynamics->friction};

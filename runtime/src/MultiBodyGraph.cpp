@@ -21,7 +21,8 @@ template<typename T>
 void MultiBodyGraphTpl<T>::addJoint(const JointT & j)
 {
   if(j.name().empty()) throw std::invalid_argument("MultiBodyGraph: joint name must not be empty");
-  if(j.name() == "Root") throw std::invalid_argument("MultiBodyGraph: joint name 'Root' is reserved");
+  if(j.name() == rootJointName)
+    throw std::invalid_argument(std::string("MultiBodyGraph: joint name '") + rootJointName + "' is reserved");
   if(hasJoint(j.name())) throw std::invalid_argument("MultiBodyGraph: duplicate joint name '" + j.name() + "'");
   joints_.push_back(j);
 }
@@ -128,7 +129,7 @@ template<typename T>
 MultiBodyTpl<T> MultiBodyGraphTpl<T>::makeMultiBody(const std::string & rootBodyName, JointType::Type rootJointType,
                                                     const PTransformT & X_0_j0, const PTransformT & X_b0_j0) const
 {
-  return makeMultiBody(rootBodyName, JointT(rootJointType, true, "Root"), X_0_j0, X_b0_j0);
+  return makeMultiBody(rootBodyName, JointT(rootJointType, true, rootJointName), X_0_j0, X_b0_j0);
 }
 
 template<typename T>

@@ -24,7 +24,7 @@ struct Context
   /// A movable joint of the robot (not fixed, not the root joint).
   bool isMovable(const std::string & joint) const
   {
-    return robot.mb.hasJoint(joint) && joint != "Root" &&
+    return robot.mb.hasJoint(joint) && joint != rbd::rootJointName &&
            robot.mb.joint(robot.mb.jointIndexByName(joint)).type() != rbd::Joint::Fixed;
   }
   void checkMovable(const XMLElement * e, const std::string & joint) const

@@ -12,7 +12,7 @@ namespace
 /// A joint of the model that a state entry may name: movable and not locked, or the floating root.
 void checkStateJoint(Context & cx, const XMLElement * e, const std::string & joint, const Scene & s)
 {
-  if(joint != "Root" || !s.floatingBase) cx.checkMovable(e, joint);
+  if(joint != rbd::rootJointName || !s.floatingBase) cx.checkMovable(e, joint);
   if(s.locked.count(joint)) cx.rd.fail(e, joint, "joint is locked");
 }
 

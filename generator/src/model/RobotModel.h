@@ -18,7 +18,7 @@ namespace rbdgen
 
 struct MovingJoint
 {
-  std::string name;         ///< joint name (URDF), "Root" for a floating base
+  std::string name;         ///< joint name (URDF), rbd::rootJointName for a floating base
   rbd::Joint joint;         ///< kernel: type, axis, direction
   int mbIndex = 0;          ///< joint index in the MultiBody
   int parent = -1;          ///< parent moving joint, -1 when attached to the static part

@@ -18,6 +18,9 @@
 namespace rbd
 {
 
+/// The name of the root joint makeMultiBody creates (reserved: no graph joint may have it).
+inline constexpr const char * rootJointName = "Root";
+
 template<typename T>
 class MultiBodyGraphTpl
 {
@@ -46,7 +49,7 @@ public:
   MultiBodyTpl<T> makeMultiBody(const std::string & rootBodyName, bool isFixed,
                                 const PTransformT & X_0_j0 = PTransformT::Identity(),
                                 const PTransformT & X_b0_j0 = PTransformT::Identity()) const;
-  /// Tree rooted at rootBodyName with a root joint of any type (named "Root").
+  /// Tree rooted at rootBodyName with a root joint of any type (named rootJointName).
   MultiBodyTpl<T> makeMultiBody(const std::string & rootBodyName, JointType::Type rootJointType,
                                 const PTransformT & X_0_j0 = PTransformT::Identity(),
                                 const PTransformT & X_b0_j0 = PTransformT::Identity()) const;

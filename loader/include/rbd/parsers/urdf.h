@@ -72,7 +72,7 @@ struct Mimic
 
 struct ParserOptions
 {
-  /// Fixed root joint (true) or Free floating base (false); the root joint is named "Root".
+  /// Fixed root joint (true) or Free floating base (false); the root joint is named rbd::rootJointName ("Root").
   bool fixed = true;
   /// Root body of the MultiBody; empty: the URDF root link.
   std::string baseLink;

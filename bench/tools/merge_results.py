@@ -12,11 +12,12 @@ import glob
 import json
 import os
 
-ALGOS = ["fk", "fk_vel", "id", "gravity", "nle", "mass_matrix", "fd", "fd_aba", "fd_crba", "jacobian", "com"]
+ALGOS = ["fk", "fk_vel", "id", "gravity", "nle", "mass_matrix", "fd", "fd_aba", "fd_crba", "jacobian", "jacobian_kin", "com"]
 ALGO_TITLES = {
     "fk": "FK, all links", "fk_vel": "FK + velocities", "id": "inverse dynamics", "gravity": "gravity torques",
     "nle": "nonlinear effects", "mass_matrix": "mass matrix", "fd": "forward dynamics (default)",
     "fd_aba": "forward dynamics ABA", "fd_crba": "forward dynamics CRBA+LTDL", "jacobian": "Jacobian (last moving link)",
+    "jacobian_kin": "Jacobian via kinematics(q) (the former jacobian(body, q))",
     "com": "centre of mass"}
 # peers time one forward-dynamics algorithm: compare every forward-dynamics row with it
 PEER_ALGO = {"fd_aba": "fd", "fd_crba": "fd"}

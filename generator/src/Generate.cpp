@@ -18,6 +18,7 @@
 #include "emit/RobotValues.h"
 #include "emit/SceneHeader.h"
 #include "emit/Template.h"
+#include "passes/SharedPasses.h"
 #include "passes/SupportPath.h"
 #include "util/Sha256.h"
 
@@ -117,11 +118,18 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
 {
   // Forward dynamics: both algorithms are emitted; forward_dynamics() calls the one with fewer
   // floating-point operations (CRBA's count includes the nonlinear_effects() it calls).
+  // Operation counts of whole algorithms (each body emitting every pass it runs), for the choice.
+  const emit::EmittedBody crbaAlone = emit::forwardDynamicsBody(rm);
+  const emit::EmittedBody abaAlone = emit::abaBody(rm);
+  const emit::EmittedBody nleAlone = emit::rneaBody(rm, {true, false, true, false});
+  // From here on, the passes that run over all joints are emitted once (detail::) and called.
+  passes::SharedPasses shared(rm);
+  const passes::SharedPasses::Scope sharing(shared);
   const emit::EmittedBody crba = emit::forwardDynamicsBody(rm);
   const emit::EmittedBody aba = emit::abaBody(rm);
   const emit::EmittedBody nle = emit::rneaBody(rm, {true, false, true, false});
   auto flops = [](const emit::OpCount & c) { return c.mults + c.adds + 20 * c.calls; };
-  const long crbaCost = flops(crba.ops) + flops(nle.ops), abaCost = flops(aba.ops);
+  const long crbaCost = flops(crbaAlone.ops) + flops(nleAlone.ops), abaCost = flops(abaAlone.ops);
   // Measured (bench/results): at equal counts ABA runs faster (CRBA's count leaves out filling and
   // reading H), e.g. ur5e 1964 vs 1777 operations but 2199 vs 2482 instructions. CRBA is chosen only
   // when it needs clearly fewer operations.
@@ -153,7 +161,6 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   }
   else v["no_forward_dynamics_note"] = emit::noForwardDynamicsNote(rm.masslessSubtrees);
   v["fn_jacobian"] = emit::jacobianBody(rm).text;
-  v["fn_jacobian_q"] = emit::jacobianFromConfigBody(rm, false).text;
   v["fn_jacobian_q_point"] = emit::jacobianFromConfigBody(rm, true).text;
   v["fn_jacobian_dot_times_alpha_q"] = emit::jacobianDotTimesAlphaFromConfigBody(rm).text;
   v["support_tables"] = passes::supportPathTables(rm);
@@ -175,6 +182,7 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   v["fn_jacobian_dot_times_alpha"] = emit::jacobianDotTimesAlphaBody(rm).text;
   v["fn_com_jacobian"] = emit::comJacobianBody(rm).text;
   v["fn_centroidal_momentum_matrix"] = emit::centroidalMomentumMatrixBody(rm).text;
+  v["shared_passes"] = shared.definitions();
   v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
   const std::string text = selectSections(templateText("dynamics.hpp.in"), {{"forward_dynamics", fd}, {"no_forward_dynamics", !fd}},
                                           "templates/dynamics.hpp.in");

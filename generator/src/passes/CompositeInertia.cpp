@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "BackwardForce.h"
+#include "SharedPasses.h"
 
 namespace rbdgen::passes
 {
@@ -11,6 +12,12 @@ std::vector<Inertia> compositeInertias(PassContext & ctx)
 {
   Block & b = ctx.block();
   const RobotModel & rm = ctx.model();
+  if(ctx.shared() && !rm.joints.empty())
+  {
+    ctx.kernel(0); // declares K
+    ctx.callOnce("[[maybe_unused]] const auto Ics = detail::composite_inertias<S>(K);");
+    return ctx.shared()->compositeInertias();
+  }
   std::vector<Inertia> Ic;
   for(const MovingJoint & mj : rm.joints) Ic.push_back(bodyInertia(mj));
   for(std::size_t k = rm.joints.size(); k-- > 0;)

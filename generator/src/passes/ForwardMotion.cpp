@@ -1,5 +1,7 @@
 #include "ForwardMotion.h"
 
+#include "SharedPasses.h"
+
 namespace rbdgen::passes
 {
 
@@ -9,6 +11,21 @@ MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const st
   const std::size_t n = ctx.model().joints.size();
   MotionState m{std::vector<Xform>(n, Xform::identity()), std::vector<Motion>(n, Motion::zero()),
                 std::vector<Motion>(n, Motion::zero()), std::vector<Motion>(n, Motion::zero())};
+  // Over every joint, poses and velocities come from the header's shared passes when it has them.
+  SharedPasses * shared = joints.size() == n && n > 0 ? ctx.shared() : nullptr;
+  if(shared && req.poses)
+  {
+    ctx.kernel(0); // declares K
+    ctx.callOnce("[[maybe_unused]] const auto X0s = detail::joint_poses<S>(K);");
+    m.X0 = shared->poses();
+  }
+  if(shared && req.velocity)
+  {
+    ctx.kernel(0);
+    ctx.callOnce("[[maybe_unused]] const auto Vs = detail::joint_velocities<S>(K, alpha);");
+    m.vJ = shared->velocities().first;
+    m.v = shared->velocities().second;
+  }
   Motion a0 = Motion::zero();
   if(req.gravity)
     for(int c = 0; c < 3; ++c) a0.v[c] = Scalar::constant(-(*req.gravity)[c]);
@@ -20,12 +37,12 @@ MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const st
     const std::string & t = mj.tag;
     const bool root = mj.parent < 0;
     const auto p = static_cast<std::size_t>(root ? 0 : mj.parent);
-    if(req.poses)
+    if(req.poses && !shared)
     {
       const Xform Xt = constantXform(mj.Xt);
       m.X0[kk] = compose(b, K.Xj, root ? Xt : compose(b, Xt, m.X0[p], t + "_X0t"), t + "_X0");
     }
-    if(req.velocity)
+    if(req.velocity && !shared)
     {
       m.vJ[kk] = jointMotion(b, K, "alpha", mj.vIndex, t + "_vJ");
       m.v[kk] = add(b, toChild(b, mj, K, root ? Motion::zero() : m.v[p], t + "_Xv"), m.vJ[kk], t + "_v");

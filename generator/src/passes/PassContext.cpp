@@ -2,16 +2,29 @@
 
 #include <fmt/format.h>
 
+#include "SharedPasses.h"
+
 namespace rbdgen::passes
 {
 
 PassContext::PassContext(Block & b, const RobotModel & rm, std::string q)
-: b_(b), rm_(rm), q_(std::move(q)), kernels_(rm.joints.size())
+: b_(b), rm_(rm), q_(std::move(q)), shared_(SharedPasses::current()), kernels_(rm.joints.size())
+{
+}
+
+PassContext::PassContext(Block & b, const RobotModel & rm, const std::vector<JointKernel> & given)
+: b_(b), rm_(rm), given_(&given), kernels_(rm.joints.size())
 {
 }
 
 const JointKernel & PassContext::kernel(int k)
 {
+  if(given_) return (*given_)[static_cast<std::size_t>(k)];
+  if(shared_)
+  {
+    callOnce(fmt::format("[[maybe_unused]] const auto K = detail::joint_kernels<S>({});", q_));
+    return shared_->kernels()[static_cast<std::size_t>(k)];
+  }
   auto & K = kernels_[static_cast<std::size_t>(k)];
   if(!K)
   {
@@ -20,6 +33,11 @@ const JointKernel & PassContext::kernel(int k)
     K = emitJointKernel(b_, mj, q_);
   }
   return *K;
+}
+
+void PassContext::callOnce(const std::string & line)
+{
+  if(calls_.insert(line).second) b_.line(line);
 }
 
 std::vector<int> PassContext::allJoints() const

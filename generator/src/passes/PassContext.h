@@ -1,9 +1,12 @@
 #pragma once
 // What the passes of one emitted function body share: the statement block, the robot model and
-// the joint kernels X_j(q), S(q), each emitted on first use (a function that walks one support
-// path emits only that path's kernels).
+// the joint kernels X_j(q), S(q). Kernels come, in this order of preference, from the caller
+// (`given`: a shared pass's own body), from the header's shared passes (SharedPasses::current():
+// one call of detail::joint_kernels), or are emitted here, each at its first use (a function
+// that walks one support path emits only that path's kernels).
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -12,11 +15,15 @@
 namespace rbdgen::passes
 {
 
+class SharedPasses;
+
 class PassContext
 {
 public:
   /// q: the C++ expression of the configuration in the emitted body ("q", "kin.q").
   PassContext(Block & b, const RobotModel & rm, std::string q = "q");
+  /// Kernels given symbolically (no sharing, nothing emitted for them).
+  PassContext(Block & b, const RobotModel & rm, const std::vector<JointKernel> & given);
 
   Block & block() { return b_; }
   const RobotModel & model() const { return rm_; }
@@ -26,11 +33,19 @@ public:
   /// Every moving joint, root first.
   std::vector<int> allJoints() const;
 
+  /// The header's shared passes when this body may call them (nullptr otherwise).
+  SharedPasses * shared() const { return shared_; }
+  /// Emit `line` (a call of a shared pass) unless this body already has it.
+  void callOnce(const std::string & line);
+
 private:
   Block & b_;
   const RobotModel & rm_;
   std::string q_;
+  const std::vector<JointKernel> * given_ = nullptr;
+  SharedPasses * shared_ = nullptr;
   std::vector<std::optional<JointKernel>> kernels_;
+  std::set<std::string> calls_;
 };
 
 } // namespace rbdgen::passes

@@ -1,0 +1,60 @@
+#pragma once
+// Passes emitted once per header as detail functions and called by every function that runs them
+// over all joints: the joint kernels, the joints' world poses, the joint velocities and the
+// composite inertias. Each returns a struct of the pass's non-constant results; the callers'
+// statements read its members, and constant entries still fold at generation time (a struct holds
+// no constant), so the emitted arithmetic is the same as when every function repeated the pass.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "JointKernels.h"
+
+namespace rbdgen::passes
+{
+
+class SharedPasses
+{
+public:
+  explicit SharedPasses(const RobotModel & rm);
+
+  /// Kernels of every joint, entries read from `K` (`const auto K = detail::joint_kernels<S>(q);`).
+  const std::vector<JointKernel> & kernels();
+  /// X_0_k of every joint, entries read from `X0s` (`detail::joint_poses<S>(K)`).
+  const std::vector<Xform> & poses();
+  /// vJ_k = S_k alpha_k and v_k of every joint, entries read from `Vs` (`detail::joint_velocities<S>(K, alpha)`).
+  const std::pair<std::vector<Motion>, std::vector<Motion>> & velocities();
+  /// Composite inertia of every joint's subtree, entries read from `Ics` (`detail::composite_inertias<S>(K)`).
+  const std::vector<Inertia> & compositeInertias();
+
+  /// The definitions of the shared passes used so far (structs and functions, dependencies first).
+  std::string definitions() const;
+
+  /// The shared passes the PassContexts of this thread use (nullptr: every function emits its own).
+  static SharedPasses * current();
+  /// Makes `s` current for its lifetime.
+  class Scope
+  {
+  public:
+    explicit Scope(SharedPasses & s);
+    ~Scope();
+    Scope(const Scope &) = delete;
+    Scope & operator=(const Scope &) = delete;
+
+  private:
+    SharedPasses * previous_;
+  };
+
+private:
+  const RobotModel & rm_;
+  std::optional<std::vector<JointKernel>> kernels_;
+  std::optional<std::vector<Xform>> poses_;
+  std::optional<std::pair<std::vector<Motion>, std::vector<Motion>>> velocities_;
+  std::optional<std::vector<Inertia>> inertias_;
+  std::vector<std::string> definitions_;
+};
+
+} // namespace rbdgen::passes

@@ -168,7 +168,7 @@ int main()
   rbd::MultiBodyConfig mbc(mb);
   rbd::InverseDynamics id(mb);
   rbd::ForwardDynamics fd(mb);
-  double errFK = 0, errID = 0, errH = 0, errFD = 0, worstCondH = 0;
+  double errFK = 0, errID = 0, errH = 0, errFD = 0, worstCondH = 0, bestCondH = HUGE_VAL;
   bool fdWithinBound = true;
   int fdChecked = 0; // states where cond(H) eps <= kMeaningful
   const double eps = std::numeric_limits<double>::epsilon();
@@ -198,6 +198,7 @@ int main()
     const Eigen::VectorXd lambda = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(fd.H(), Eigen::EigenvaluesOnly).eigenvalues();
     const double condH = lambda.minCoeff() > 0 ? lambda.maxCoeff() / lambda.minCoeff() : HUGE_VAL; // singular H
     worstCondH = std::max(worstCondH, condH);
+    bestCondH = std::min(bestCondH, condH);
     if(robot::has_forward_dynamics && condH * eps <= kMeaningful)
     {
       const double eFD = relErr(generatedForwardDynamics(s.q, s.alpha, s.tau), rbd::dofToVector(mb, mbc.alphaD));
@@ -219,7 +220,7 @@ int main()
   else if(fdChecked == 0)
     std::printf("  %-20s %9s  NOT VERIFIED: ill-conditioned mass matrix, cond(H) >= %.1e on every state (cond(H) eps "
                 "> %.0e: neither solver is meaningful; see rbdgen's warnings)\n",
-                "forward dynamics", "-", worstCondH, kMeaningful);
+                "forward dynamics", "-", bestCondH, kMeaningful);
   else
     std::printf("  %-20s %9.2e  %s (%d of %d states with cond(H) eps <= %.0e; largest cond(H) %.1e; bound per state: "
                 "%.0e + cond(H) eps)\n",

@@ -148,7 +148,7 @@ std::vector<std::string> MassMatrixReport::messages(const std::string & source) 
   for(const DofInertia & d : negligible)
     out.push_back(fmt::format("{}: joint '{}': negligible effective inertia (dof {}, {}): S^T Ic S = {:.3g} {} is {:.2g} "
                               "of the robot's {} (M = {:.4g} kg, L = {:.3g} m; threshold {:g}): the mass matrix is "
-                              "ill-conditioned (cond(H) >~ {:.0e}), forward dynamics loses about {:.0f} digits; give the "
+                              "ill-conditioned (cond(H) of order {:.0e}), forward dynamics loses about {:.0f} digits; give the "
                               "links it moves realistic mass and inertia, or make the joint fixed",
                               source, d.joint, d.dof, d.rotational ? "rotation" : "translation",
                               d.ratio * (d.rotational ? totalMass * length * length : totalMass),

@@ -15,9 +15,10 @@
 //    largest distance from the root body's origin to a link origin or a centre of mass, at least
 //    the robot's radius of gyration about the root). S^T Ic S is the diagonal entry of H for that
 //    dof at q = 0 (kg m^2 or kg), M L^2 and M the same entry for the whole robot moved rigidly at
-//    arm's length, so the ratio is dimensionless. H is positive definite, so its smallest
-//    eigenvalue is at most its smallest diagonal entry: a ratio r bounds cond(H) from below by
-//    about (largest diagonal) / (r M L^2), i.e. ~1/r, and forward dynamics then loses about
+//    arm's length, so the ratio is dimensionless. H is symmetric positive definite, so its smallest
+//    eigenvalue is at most its smallest diagonal entry and its largest at least its largest one:
+//    cond(H) >= max_k H_kk / (r M L^2) (rotational dof), of order 1/r for robots of metre size
+//    (measured, docs/DESIGN.md: 1/r within a factor 3), and forward dynamics then loses about
 //    -log10(r) digits.
 
 #include <string>

@@ -218,10 +218,19 @@ TEST(NegligibleInertia, ClosedFormRatioConditionNumberAndThreshold)
 
 TEST(NegligibleInertia, MasslessSubtreeIsReportedSeparately)
 {
+  // A massless frame on a fixed joint (a sensor) is not reported.
+  {
+    std::string text = armUrdf(1.0);
+    text.insert(text.find("</robot>"), "<link name=\"sensor\"/><joint name=\"s\" type=\"fixed\"><parent link=\"link2\"/>"
+                                       "<child link=\"sensor\"/></joint>");
+    const auto r = rbd::parsers::fromUrdfString(text, {}, "arm.urdf");
+    EXPECT_TRUE(rbdgen::checkMassMatrix(r.mb).masslessSubtrees.empty());
+  }
   const auto r = rbd::parsers::fromUrdfString(armUrdf(0.0), {}, "arm.urdf");
   const rbdgen::MassMatrixReport rep = rbdgen::checkMassMatrix(r.mb);
   EXPECT_EQ(rep.masslessSubtrees, std::vector<std::string>{"j2"});
   EXPECT_TRUE(rep.negligible.empty());
+  EXPECT_TRUE(mentions(rep.messages("arm.urdf"), "arm.urdf: joint(s) 'j2' move only massless links"));
   Eigen::FullPivLU<Eigen::MatrixXd> lu(runtimeH(r.mb, 2));
   EXPECT_EQ(lu.rank(), 1);
 }

@@ -14,8 +14,12 @@
 # changes, and only then. With SCENE the header is specialised to the scene's effects; the URDF,
 # base and base link come from the scene (URDF, FLOATING_BASE and BASE_LINK are errors then).
 # NAMESPACE defaults to the URDF robot name made into an identifier (with SCENE: the TARGET name);
-# OUTPUT_DIR to ${CMAKE_CURRENT_BINARY_DIR}/<TARGET>. STRICT: joints moving only massless links
-# (singular mass matrix, no forward dynamics) are an error instead of a warning.
+# OUTPUT_DIR to ${CMAKE_CURRENT_BINARY_DIR}/<TARGET>. rbdgen's warnings (the loader's: non-physical
+# inertias, mimic joints loaded as independent joints, a URDF floating joint used as the base; the
+# mass matrix checks: joints moving only massless links, two free joints with a massless link
+# between them, dofs of negligible effective inertia) are printed by the build as
+# "rbdgen: warning: ..." (Ninja and Make show a custom command's output) and never fail it.
+# STRICT: the mass matrix checks are errors instead of warnings.
 include_guard(GLOBAL)
 
 function(_rbdgen_identifier out text)

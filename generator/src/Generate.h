@@ -17,7 +17,7 @@ struct GenerateOptions
 {
   std::string urdf;          ///< input URDF path (empty with a scene: the scene names its URDF)
   std::string scene;         ///< scene file (rbd/scene/Scene.h): emit the scene-specialised header
-  bool strict = false;       ///< joints moving only massless links are an error, not a warning
+  bool strict = false;       ///< mass matrix hazards (MassMatrixChecks.h) are an error, not a warning
   std::string outDir;        ///< output directory; the header goes to outDir/<namespace>/dynamics.hpp
   std::string ns;            ///< C++ namespace (default: the sanitised robot name)
   bool floatingBase = false;
@@ -31,8 +31,12 @@ struct GeneratedFile
 };
 
 /// The text of every generated file, in memory (nothing written). Warnings go to stderr
-/// ("rbdgen: warning: ..."): joints moving only massless links make the mass matrix singular, and
-/// the header then has no forward dynamics (an error with opt.strict). inputs (when given)
+/// ("rbdgen: warning: ..."): the loader's (robot.warnings: non-physical inertias, mimic joints
+/// loaded as independent joints, a URDF floating joint used as the base, ...), never an error; and
+/// the mass matrix checks (MassMatrixChecks.h): joints moving only massless links or two free
+/// joints with a massless link between them make the mass matrix singular and the header then has
+/// no forward dynamics; a dof of negligible effective inertia makes it ill-conditioned. Each of
+/// these is an error with opt.strict. inputs (when given)
 /// receives the files the output depends on (URDF, scene), for a depfile.
 std::vector<GeneratedFile> generateFiles(const GenerateOptions & opt, std::vector<std::string> * inputs = nullptr);
 

@@ -7,6 +7,8 @@
 #include <rbd/FV.h>
 #include <rbd/ID.h>
 
+#include "model/MassMatrixChecks.h"
+
 namespace rbdgen
 {
 namespace
@@ -56,7 +58,7 @@ const char * torqueUnit(const rbd::Joint & j, std::size_t k)
 
 } // namespace
 
-void printInfo(std::ostream & os, const rbd::parsers::ParserResult & robot)
+void printInfo(std::ostream & os, const rbd::parsers::ParserResult & robot, const std::string & source)
 {
   const rbd::MultiBody & mb = robot.mb;
   double mass = 0;
@@ -66,6 +68,14 @@ void printInfo(std::ostream & os, const rbd::parsers::ParserResult & robot)
   fmt::print(os, "tree (body <- joint):\n");
   printTree(os, mb);
   for(const auto & w : robot.warnings) fmt::print(os, "warning: {}\n", w);
+  const MassMatrixReport checks = checkMassMatrix(mb);
+  if(checks.smallest.joint.empty()) fmt::print(os, "mass matrix at q = 0: M = {:.4g} kg, L = {:.3g} m\n", checks.totalMass, checks.length);
+  else
+    fmt::print(os, "mass matrix at q = 0: M = {:.4g} kg, L = {:.3g} m, smallest effective inertia S^T Ic S / {} = {:.2g} "
+                   "(joint '{}', dof {}; warning below {:g})\n",
+               checks.totalMass, checks.length, checks.smallest.rotational ? "(M L^2)" : "M", checks.smallest.ratio,
+               checks.smallest.joint, checks.smallest.dof, kNegligibleRatio);
+  for(const auto & w : checks.messages(source)) fmt::print(os, "warning: {}\n", w);
 
   // Gravity torques at the zero configuration: inverse dynamics with alpha = alphaD = 0.
   rbd::MultiBodyConfig mbc(mb);

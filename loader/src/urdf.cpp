@@ -116,19 +116,23 @@ void addLimits(const urdf::Joint & uj, const rbd::Joint & j, Limits & limits)
   limits.torque[uj.name].assign(nd, l ? l->effort : inf);
 }
 
-/// Warn about movable joints that carry no mass at all (singular mass matrix).
-void warnMassless(const rbd::MultiBody & mb, const std::string & file, std::vector<std::string> & warnings)
+/// A floating base on a URDF that has its own: the root link is massless (no mass, no inertia) and
+/// its only joint is `floating`. Returns that joint, or nullptr.
+const urdf::Joint * ownFloatingJoint(const urdf::ModelInterface & model, const std::string & rootLink)
 {
-  std::vector<double> subtreeMass(static_cast<std::size_t>(mb.nrBodies()), 0.);
-  for(int i = mb.nrBodies() - 1; i >= 0; --i)
+  const auto link = model.links_.find(rootLink);
+  if(link == model.links_.end() || !link->second) return nullptr;
+  const urdf::InertialSharedPtr & in = link->second->inertial;
+  if(in && (in->mass != 0 || in->ixx != 0 || in->iyy != 0 || in->izz != 0 || in->ixy != 0 || in->ixz != 0 || in->iyz != 0))
+    return nullptr;
+  const urdf::Joint * only = nullptr;
+  for(const auto & [name, j] : model.joints_)
   {
-    subtreeMass[static_cast<std::size_t>(i)] += mb.body(i).inertia().mass();
-    if(mb.parent(i) >= 0) subtreeMass[static_cast<std::size_t>(mb.parent(i))] += subtreeMass[static_cast<std::size_t>(i)];
+    if(!j || (j->parent_link_name != rootLink && j->child_link_name != rootLink)) continue;
+    if(only) return nullptr; // more than one joint at the root link
+    only = j.get();
   }
-  for(int i = 0; i < mb.nrBodies(); ++i)
-    if(mb.joint(i).dof() > 0 && subtreeMass[static_cast<std::size_t>(i)] <= 0)
-      warnings.push_back(file + ": link '" + mb.body(i).name() + "': massless link moved by joint '" + mb.joint(i).name() +
-                         "' with nothing massive beyond it (singular mass matrix)");
+  return only && only->type == urdf::Joint::FLOATING && only->parent_link_name == rootLink ? only : nullptr;
 }
 
 } // namespace
@@ -174,8 +178,25 @@ ParserResult fromUrdfString(const std::string & xml, const ParserOptions & opt, 
                        sva::PTransformd::Identity(), uj.name);
   }
 
+  // A floating base on a URDF with its own floating joint under a massless root link (`world`)
+  // would stack two free joints (a singular mass matrix): the URDF's joint is the floating base.
+  std::string base = opt.baseLink.empty() ? checked.rootLink : opt.baseLink;
+  if(!opt.fixed && base == checked.rootLink)
+    if(const urdf::Joint * fj = ownFloatingJoint(*model, checked.rootLink))
+    {
+      base = fj->child_link_name;
+      res.mbg.removeJoint(base, fj->name); // takes the root link away with it
+      const urdf::Pose & o = fj->parent_to_joint_origin_transform;
+      const bool offset = o.position.x != 0 || o.position.y != 0 || o.position.z != 0 || o.rotation.w != 1;
+      res.warnings.push_back(
+          sourceName + ": joint '" + fj->name + "': floating joint under the massless root link '" + checked.rootLink +
+          "': with a floating base this would stack two free joints (a singular mass matrix), so the URDF's floating joint "
+          "is the floating base: the tree is rooted at link '" + base + "' by the free joint 'Root', link '" +
+          checked.rootLink + "' and joint '" + fj->name + "' are dropped" +
+          (offset ? " (and the joint's <origin>: q of 'Root' is the pose of '" + base + "' in the world)" : ""));
+    }
+
   // Filtered links: drop (or merge into the parent body) each subtree, seen from the base.
-  const std::string base = opt.baseLink.empty() ? checked.rootLink : opt.baseLink;
   for(const std::string & f : opt.filteredLinks)
   {
     if(!res.mbg.hasBody(f)) continue; // already gone with a filtered ancestor
@@ -198,17 +219,17 @@ ParserResult fromUrdfString(const std::string & xml, const ParserOptions & opt, 
     const urdf::Joint & uj = *model->joints_.at(j.name());
     if(j.type() != rbd::Joint::Fixed) addLimits(uj, j, res.limits);
     if(uj.dynamics) res.dynamics[j.name()] = JointDynamics{uj.dynamics->damping, uj.dynamics->friction};
-    if(uj.mimic)
+    if(uj.mimic) res.mimics[j.name()] = Mimic{uj.mimic->joint_name, uj.mimic->multiplier, uj.mimic->offset};
+    if(uj.mimic && j.type() != rbd::Joint::Fixed) // a fixed joint has nothing to couple: no warning
     {
-      res.mimics[j.name()] = Mimic{uj.mimic->joint_name, uj.mimic->multiplier, uj.mimic->offset};
       std::ostringstream os;
       os << sourceName << ": joint '" << j.name() << "': mimics joint '" << uj.mimic->joint_name << "' (q = "
          << uj.mimic->multiplier << " q_" << uj.mimic->joint_name << " + " << uj.mimic->offset
-         << "); loaded as an independent joint";
+         << "): NOT coupled, loaded as an independent joint with its own dof (nq and nv count it; its position, "
+            "velocity and torque are free)";
       res.warnings.push_back(os.str());
     }
   }
-  warnMassless(res.mb, sourceName, res.warnings);
   return res;
 }
 

@@ -62,9 +62,12 @@ void checkRobot(const fs::path & file, const std::map<std::string, Expected> & t
   EXPECT_EQ(mb.joint(0).type(), rbd::Joint::Fixed);
   EXPECT_EQ(floatR.mb.joint(0).type(), rbd::Joint::Free);
   EXPECT_EQ(floatR.mb.joint(0).name(), "Root");
-  EXPECT_EQ(floatR.mb.nrDof(), mb.nrDof() + 6);
-  EXPECT_EQ(floatR.mb.nrParams(), mb.nrParams() + 7);
-  EXPECT_EQ(floatR.mb.nrBodies(), mb.nrBodies());
+  // all_joints.urdf has its own floating joint under a massless `world` link: with a floating
+  // base, that joint is the base (world and the joint dropped), not a second free joint.
+  const bool ownFloating = file.stem() == "all_joints";
+  EXPECT_EQ(floatR.mb.nrDof(), mb.nrDof() + (ownFloating ? 0 : 6));
+  EXPECT_EQ(floatR.mb.nrParams(), mb.nrParams() + (ownFloating ? 0 : 7));
+  EXPECT_EQ(floatR.mb.nrBodies(), mb.nrBodies() - (ownFloating ? 1 : 0));
   EXPECT_EQ(static_cast<int>(fixedR.mbg.nrNodes()), mb.nrBodies());
   auto it = table.find(file.stem().string());
   if(it != table.end())

@@ -143,6 +143,7 @@ RobotModel buildRobotModel(const rbd::MultiBody & mb, const std::vector<sva::PTr
   }
   for(std::size_t k = 0; k < rm.joints.size(); ++k)
     if(subtreeMass[k] <= 0.0) rm.masslessSubtrees.push_back(rm.joints[k].name);
+  rm.checks = checkMassMatrix(mb);
   return rm;
 }
 

@@ -13,6 +13,8 @@
 
 #include <rbd/MultiBody.h>
 
+#include "MassMatrixChecks.h"
+
 namespace rbdgen
 {
 
@@ -49,6 +51,12 @@ struct RobotModel
   Eigen::Vector3d staticMoment = Eigen::Vector3d::Zero();
   /// Moving joints whose subtree carries no mass: the mass matrix is singular there.
   std::vector<std::string> masslessSubtrees;
+  /// The mass matrix checks of the MultiBody (massless subtrees, stacked free joints, negligible
+  /// inertias; see MassMatrixChecks.h).
+  MassMatrixReport checks;
+
+  /// false when H is singular by construction (massless subtrees, stacked free joints).
+  bool regularMassMatrix() const { return masslessSubtrees.empty() && checks.stackedFree.empty(); }
 
   /// Ancestors of moving joint k (inclusive), from the root down.
   std::vector<int> path(int k) const;

@@ -29,7 +29,8 @@ Command addGenerateCommand(CLI::App & app)
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", o->outDir, "output directory")->required();
   cmd->add_option("--namespace", o->ns, "C++ namespace (default: the scene or robot name, sanitised)");
-  cmd->add_flag("--strict", o->strict, "joints moving only massless links (singular mass matrix) are an error");
+  cmd->add_flag("--strict", o->strict, "mass matrix hazards are errors, not warnings: joints moving only massless links, two free joints with "
+                                    "a massless link between them (singular), dofs of negligible effective inertia (ill-conditioned)");
   cmd->add_option("--depfile", o->depfile, "also write a Makefile-syntax depfile (header: inputs) for the build system");
   return {cmd,
           [o] {

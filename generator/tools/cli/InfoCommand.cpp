@@ -16,7 +16,7 @@ Command addInfoCommand(CLI::App & app)
   robot->addTo(*cmd);
   return {cmd,
           [robot] {
-            printInfo(std::cout, robot->load());
+            printInfo(std::cout, robot->load(), robot->urdf);
             return 0;
           },
           [robot] { return robot->urdf; }};

@@ -73,6 +73,11 @@ struct Mimic
 struct ParserOptions
 {
   /// Fixed root joint (true) or Free floating base (false); the root joint is named rbd::rootJointName ("Root").
+  /// With false, when the base is the URDF root link, that link is massless (no mass, no inertia)
+  /// and its only joint is a `floating` one (a URDF that has its own floating base under a
+  /// `world` link), that joint is the floating base: the tree is rooted at its child link by the
+  /// free joint "Root", the root link and the floating joint are dropped (also from mbg), and a
+  /// warning says so. Two stacked free joints would make the mass matrix singular.
   bool fixed = true;
   /// Root body of the MultiBody; empty: the URDF root link.
   std::string baseLink;
@@ -96,7 +101,10 @@ struct ParserResult
   std::map<std::string, JointDynamics> dynamics; ///< joints with a <dynamics> element
   std::map<std::string, Mimic> mimics;           ///< joints with a <mimic> element
   std::string name;                              ///< <robot name>
-  std::vector<std::string> warnings;             ///< "<file>: <element> '<name>': <text>"
+  /// "<file>: <element> '<name>': <text>": urdfdom's warnings, inertias violating the triangle
+  /// inequality, mimic joints (not fixed) loaded as independent joints, a URDF floating joint used
+  /// as the floating base. (Mass matrix hazards are rbdgen's checks, generator/src/model/MassMatrixChecks.h.)
+  std::vector<std::string> warnings;
   /// X_b_j per body: from the original URDF link frame to the MultiBody body frame
   /// (identity except for the bodies moved by backward joints when baseLink is not the root).
   std::map<std::string, sva::PTransformd> bodyBaseTransforms;

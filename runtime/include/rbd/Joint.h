@@ -7,6 +7,7 @@
 //   X_j_bwd(q) = X_j_fwd(q)^-1,   S_bwd(q) = -X_j_fwd(q)^-1 S_fwd,   d/dt(S_bwd) alpha = 0.
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -172,7 +173,7 @@ void JointTpl<T>::construct(const sva::Vector3<T> & axis)
   if(needsAxis)
   {
     const T n = axis.norm();
-    if(!(n > T(0)) || !std::isfinite(static_cast<double>(n)))
+    if(!(n > T(0) && n < T(std::numeric_limits<double>::infinity()))) // also false for NaN
       throw std::invalid_argument("joint '" + name_ + "': axis must be finite and non-zero");
     axis_ = axis / n;
   }
@@ -198,9 +199,10 @@ void JointTpl<T>::construct(const sva::Vector3<T> & axis)
     case Planar:
     {
       // In-plane basis (u, w, n) right-handed: u from the world axis least aligned with n.
+      using std::abs;
       int k = 0;
       for(int i = 1; i < 3; ++i)
-        if(std::abs(axis_(i)) < std::abs(axis_(k)) - T(1e-12)) k = i;
+        if(abs(axis_(i)) < abs(axis_(k)) - T(1e-12)) k = i;
       const sva::Vector3<T> e = sva::Vector3<T>::Unit(k);
       u_ = (e - e.dot(axis_) * axis_).normalized();
       w_ = axis_.cross(u_);

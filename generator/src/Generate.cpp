@@ -120,7 +120,7 @@ RobotModel robotModelFromUrdf(const rbd::parsers::ParserResult & robot)
 }
 
 std::string emitHeader(const RobotModel & rm, const std::string & ns, const std::string & sourceName,
-                       const std::string & sourceHash, const std::string & options)
+                       const std::string & sourceHash, const std::string & options, bool derivatives)
 {
   // Forward dynamics: both algorithms are emitted; forward_dynamics() calls the one with fewer
   // floating-point operations (CRBA's count includes the nonlinear_effects() it calls).
@@ -197,9 +197,18 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   v["fn_jacobian_dot_times_alpha"] = emit::jacobianDotTimesAlphaBody(rm).text;
   v["fn_com_jacobian"] = emit::comJacobianBody(rm).text;
   v["fn_centroidal_momentum_matrix"] = emit::centroidalMomentumMatrixBody(rm).text;
+  v["fn_inverse_dynamics_derivatives"] = derivatives ? emit::inverseDynamicsDerivativesBody(rm).text : "";
+  v["fn_mass_matrix_factors"] = derivatives && fd ? emit::massMatrixFactorsBody(rm).text : "";
+  {
+    std::string parents;
+    for(int l : emit::dofParents(rm)) parents += fmt::format("{}{}", parents.empty() ? "" : ", ", l);
+    v["dof_parent"] = parents;
+    v["njoint_dofs"] = std::to_string(rm.nv);
+  }
   v["shared_passes"] = shared.definitions();
   v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
-  const std::string text = selectSections(templateText("dynamics.hpp.in"), {{"forward_dynamics", fd}, {"no_forward_dynamics", !fd}},
+  const std::string text = selectSections(templateText("dynamics.hpp.in"),
+                                          {{"forward_dynamics", fd}, {"no_forward_dynamics", !fd}, {"derivatives", derivatives}},
                                           "templates/dynamics.hpp.in");
   return fillTemplate(text, v, "templates/dynamics.hpp.in");
 }
@@ -217,10 +226,11 @@ std::vector<GeneratedFile> generateFiles(const GenerateOptions & opt, std::vecto
   printLoaderWarnings(robot.warnings);
   massMatrixPolicy(rm.checks, rm.masslessSubtrees, opt.urdf, opt.strict);
   if(inputs) *inputs = {fs::absolute(opt.urdf).lexically_normal().string()};
-  const std::string options = fmt::format("{}{}", opt.floatingBase ? "floating base" : "fixed base",
-                                          opt.baseLink.empty() ? "" : ", base link " + opt.baseLink);
+  const std::string options = fmt::format("{}{}{}", opt.floatingBase ? "floating base" : "fixed base",
+                                          opt.baseLink.empty() ? "" : ", base link " + opt.baseLink,
+                                          opt.derivatives ? ", derivatives" : "");
   const std::string text = readFile(opt.urdf);
-  const std::string header = emitHeader(rm, ns, fs::path(opt.urdf).filename().string(), sha256Hex(text), options);
+  const std::string header = emitHeader(rm, ns, fs::path(opt.urdf).filename().string(), sha256Hex(text), options, opt.derivatives);
   return {GeneratedFile{ns + "/dynamics.hpp", header}};
 }
 

@@ -22,6 +22,7 @@ struct GenerateOptions
   std::string ns;            ///< C++ namespace (default: the sanitised robot name)
   bool floatingBase = false;
   std::string baseLink;      ///< default: the URDF root link
+  bool derivatives = false;  ///< also emit inverse/forward dynamics derivatives
 };
 
 struct GeneratedFile
@@ -47,8 +48,9 @@ std::string depfileText(const std::string & target, const std::vector<std::strin
 RobotModel robotModelFromUrdf(const rbd::parsers::ParserResult & robot);
 
 /// Emit the header for a model (ns: namespace, sourceName and sourceHash for provenance).
+/// derivatives: also emit inverse_dynamics_derivatives() and forward_dynamics_derivatives().
 std::string emitHeader(const RobotModel & rm, const std::string & ns, const std::string & sourceName,
-                       const std::string & sourceHash, const std::string & options);
+                       const std::string & sourceHash, const std::string & options, bool derivatives = false);
 
 /// Write files under outDir: each goes to a temporary file first and is renamed into place only
 /// once all were written; a file whose content did not change is left untouched (mtime kept).

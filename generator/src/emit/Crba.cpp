@@ -50,7 +50,8 @@ std::vector<std::vector<Scalar>> emitCrba(PassContext & ctx)
   return H;
 }
 
-// Parent of each dof in the dof tree (Featherstone's λ on dofs), -1 for a root dof.
+} // namespace
+
 std::vector<int> dofParents(const RobotModel & rm)
 {
   std::vector<int> lambda(static_cast<std::size_t>(rm.nv), -1);
@@ -64,8 +65,6 @@ std::vector<int> dofParents(const RobotModel & rm)
   return lambda;
 }
 
-} // namespace
-
 std::vector<std::vector<Scalar>> emitMassMatrix(Block & b, const RobotModel & rm, const std::vector<double> & armature)
 {
   PassContext ctx(b, rm);
@@ -78,6 +77,49 @@ std::vector<std::vector<Scalar>> emitMassMatrix(Block & b, const RobotModel & rm
   for(std::size_t i = 0; i < armature.size() && i < nv; ++i)
     if(armature[i] != 0.0) L[i][i] = b.sum({Term{1.0, {L[i][i]}}, Term{armature[i], {}}}, fmt::format("Ha{}", i));
   return L;
+}
+
+Ltdl emitLtdl(Block & b, const RobotModel & rm, std::vector<std::vector<Scalar>> L)
+{
+  const auto nv = static_cast<std::size_t>(rm.nv);
+  const std::vector<int> lambda = dofParents(rm);
+  b.comment("tree-sparse factorisation H = L^T D L (Featherstone, RBDA 6.5), in place on the lower triangle");
+  std::vector<Scalar> invD(nv);
+  for(std::size_t k = nv; k-- > 0;)
+  {
+    invD[k] = b.def("S(1) / " + Block::text(L[k][k]), fmt::format("invD{}", k));
+    for(int i = lambda[k]; i >= 0; i = lambda[static_cast<std::size_t>(i)])
+    {
+      const auto ii = static_cast<std::size_t>(i);
+      const Scalar a = mul(b, L[k][ii], invD[k], fmt::format("L{}_{}", k, i));
+      for(int j = i; j >= 0; j = lambda[static_cast<std::size_t>(j)])
+      {
+        const auto jj = static_cast<std::size_t>(j);
+        L[ii][jj] = b.sum({Term{1.0, {L[ii][jj]}}, Term{-1.0, {L[k][jj], a}}}, fmt::format("H{}_{}", i, j));
+      }
+      L[k][ii] = a;
+    }
+  }
+  return {std::move(L), std::move(invD), lambda};
+}
+
+std::vector<Scalar> emitLtdlSolve(Block & b, const Ltdl & f, std::vector<Scalar> x)
+{
+  const std::size_t nv = x.size();
+  const auto & L = f.L;
+  const auto & lambda = f.lambda;
+  b.comment("solve L^T D L x = rhs");
+  for(std::size_t i = nv; i-- > 0;)
+    for(int j = lambda[i]; j >= 0; j = lambda[static_cast<std::size_t>(j)])
+    {
+      const auto jj = static_cast<std::size_t>(j);
+      x[jj] = b.sum({Term{1.0, {x[jj]}}, Term{-1.0, {L[i][jj], x[i]}}}, fmt::format("x{}", j));
+    }
+  for(std::size_t i = 0; i < nv; ++i) x[i] = mul(b, x[i], f.invD[i], fmt::format("x{}", i));
+  for(std::size_t i = 0; i < nv; ++i)
+    for(int j = lambda[i]; j >= 0; j = lambda[static_cast<std::size_t>(j)])
+      x[i] = b.sum({Term{1.0, {x[i]}}, Term{-1.0, {L[i][static_cast<std::size_t>(j)], x[static_cast<std::size_t>(j)]}}}, fmt::format("x{}", i));
+  return x;
 }
 
 EmittedBody massMatrixBody(const RobotModel & rm, const std::vector<double> & armature)
@@ -109,35 +151,8 @@ EmittedBody forwardDynamicsBody(const RobotModel & rm, const FdOptions & opt)
     b.line("const Tangent<S> C = " + opt.biasCall + ";");
     for(std::size_t i = 0; i < nv; ++i) x[i] = b.sum({Term{1.0, {Scalar::var(fmt::format("tau[{}]", i))}}, Term{-1.0, {Scalar::var(fmt::format("C[{}]", i))}}}, fmt::format("x{}", i));
   }
-  const std::vector<int> lambda = dofParents(rm);
-  b.comment("tree-sparse factorisation H = L^T D L (Featherstone, RBDA 6.5), in place on the lower triangle");
-  std::vector<Scalar> invD(nv);
-  for(std::size_t k = nv; k-- > 0;)
-  {
-    invD[k] = b.def("S(1) / " + Block::text(L[k][k]), fmt::format("invD{}", k));
-    for(int i = lambda[k]; i >= 0; i = lambda[static_cast<std::size_t>(i)])
-    {
-      const auto ii = static_cast<std::size_t>(i);
-      const Scalar a = mul(b, L[k][ii], invD[k], fmt::format("L{}_{}", k, i));
-      for(int j = i; j >= 0; j = lambda[static_cast<std::size_t>(j)])
-      {
-        const auto jj = static_cast<std::size_t>(j);
-        L[ii][jj] = b.sum({Term{1.0, {L[ii][jj]}}, Term{-1.0, {L[k][jj], a}}}, fmt::format("H{}_{}", i, j));
-      }
-      L[k][ii] = a;
-    }
-  }
-  b.comment("solve L^T D L alphaD = tau - C");
-  for(std::size_t i = nv; i-- > 0;)
-    for(int j = lambda[i]; j >= 0; j = lambda[static_cast<std::size_t>(j)])
-    {
-      const auto jj = static_cast<std::size_t>(j);
-      x[jj] = b.sum({Term{1.0, {x[jj]}}, Term{-1.0, {L[i][jj], x[i]}}}, fmt::format("x{}", j));
-    }
-  for(std::size_t i = 0; i < nv; ++i) x[i] = mul(b, x[i], invD[i], fmt::format("x{}", i));
-  for(std::size_t i = 0; i < nv; ++i)
-    for(int j = lambda[i]; j >= 0; j = lambda[static_cast<std::size_t>(j)])
-      x[i] = b.sum({Term{1.0, {x[i]}}, Term{-1.0, {L[i][static_cast<std::size_t>(j)], x[static_cast<std::size_t>(j)]}}}, fmt::format("x{}", i));
+  const Ltdl f = emitLtdl(b, rm, std::move(L));
+  x = emitLtdlSolve(b, f, std::move(x));
   for(std::size_t i = 0; i < nv; ++i) b.line(fmt::format("alphaD[{}] = {};", i, Block::text(x[i])));
   return finish(b);
 }

@@ -60,6 +60,24 @@ struct FdOptions
 EmittedBody forwardDynamicsBody(const RobotModel & rm, const FdOptions & opt = {});
 /// Lower triangle of H + diag(armature) (CRBA) as symbols, H[r][c] for c <= r.
 std::vector<std::vector<cg::Scalar>> emitMassMatrix(cg::Block & b, const RobotModel & rm, const std::vector<double> & armature);
+/// Parent of each dof in the dof tree (Featherstone's λ on dofs), -1 for a root dof.
+std::vector<int> dofParents(const RobotModel & rm);
+/// H = L^T D L, tree-sparse (Featherstone, RBDA 6.5): L[k][i] for i an ancestor dof of k, 1/D.
+struct Ltdl
+{
+  std::vector<std::vector<cg::Scalar>> L;
+  std::vector<cg::Scalar> invD;
+  std::vector<int> lambda;
+};
+/// Factorise the lower triangle H (from emitMassMatrix).
+Ltdl emitLtdl(cg::Block & b, const RobotModel & rm, std::vector<std::vector<cg::Scalar>> H);
+/// x <- H^-1 x with the factors of emitLtdl.
+std::vector<cg::Scalar> emitLtdlSolve(cg::Block & b, const Ltdl & f, std::vector<cg::Scalar> x);
+/// Reads q, alpha, alphaD; fills `d.dtau_dq` and `d.dtau_dalpha` (zeroed before; tangent convention
+/// of rbd/IDDerivatives.h).
+EmittedBody inverseDynamicsDerivativesBody(const RobotModel & rm);
+/// Reads q; fills `f.L[k * nv + i]` and `f.invD[k]` (detail::Ltdl<S>) with the factors of H.
+EmittedBody massMatrixFactorsBody(const RobotModel & rm);
 /// Reads q, alpha, tau; fills `alphaD` (articulated-body algorithm).
 EmittedBody abaBody(const RobotModel & rm);
 

@@ -20,6 +20,7 @@ Command addGenerateCommand(CLI::App & app)
     RobotOptions robot;
     std::string outDir, ns, scene, depfile;
     bool strict = false;
+    bool derivatives = false;
   };
   auto o = std::make_shared<Options>();
   CLI::App * cmd = app.add_subcommand("generate", "emit NS/dynamics.hpp for the robot (or the scene) into --out DIR");
@@ -31,6 +32,9 @@ Command addGenerateCommand(CLI::App & app)
   cmd->add_option("--namespace", o->ns, "C++ namespace (default: the scene or robot name, sanitised)");
   cmd->add_flag("--strict", o->strict, "mass matrix hazards are errors, not warnings: joints moving only massless links, two free joints with "
                                     "a massless link between them (singular), dofs of negligible effective inertia (ill-conditioned)");
+  cmd->add_flag("--derivatives", o->derivatives,
+                "also emit inverse_dynamics_derivatives(q, alpha, alphaD) and forward_dynamics_derivatives(q, alpha, tau) "
+                "(d/dq in the tangent space, d/dalpha, M^-1)");
   cmd->add_option("--depfile", o->depfile, "also write a Makefile-syntax depfile (header: inputs) for the build system");
   return {cmd,
           [o] {
@@ -39,6 +43,7 @@ Command addGenerateCommand(CLI::App & app)
             opt.urdf = o->robot.urdf;
             opt.scene = o->scene;
             opt.strict = o->strict;
+            opt.derivatives = o->derivatives;
             opt.floatingBase = o->robot.floatingBase;
             opt.baseLink = o->robot.baseLink;
             opt.outDir = o->outDir;

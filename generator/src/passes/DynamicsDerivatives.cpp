@@ -1,0 +1,210 @@
+#include "DynamicsDerivatives.h"
+
+#include <fmt/format.h>
+
+#include "BackwardForce.h"
+
+namespace rbdgen::passes
+{
+
+namespace
+{
+
+/// m . f = w . n + v . f
+Scalar dot(Block & b, const Motion & m, const Force & f, const std::string & hint)
+{
+  std::vector<Term> t;
+  for(int i = 0; i < 3; ++i)
+  {
+    t.push_back(Term{1.0, {m.w[i], f.n[i]}});
+    t.push_back(Term{1.0, {m.v[i], f.f[i]}});
+  }
+  return b.sum(t, hint);
+}
+
+/// dI/dt x = [J w + hd x v; -hd x w]
+Force apply(Block & b, const InertiaRate & R, const Motion & x, const std::string & hint)
+{
+  Force o;
+  for(int i = 0; i < 3; ++i)
+  {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    o.n[i] = b.sum({Term{1.0, {R.J(i, 0), x.w[0]}}, Term{1.0, {R.J(i, 1), x.w[1]}}, Term{1.0, {R.J(i, 2), x.w[2]}},
+                    Term{1.0, {R.hd[j], x.v[k]}}, Term{-1.0, {R.hd[k], x.v[j]}}},
+                   fmt::format("{}_n{}", hint, i));
+    o.f[i] = b.sum({Term{-1.0, {R.hd[j], x.w[k]}}, Term{1.0, {R.hd[k], x.w[j]}}}, fmt::format("{}_f{}", hint, i));
+  }
+  return o;
+}
+
+/// dI/dt of the world inertia I moving with the world twist v = [w; u].
+InertiaRate inertiaRate(Block & b, const Inertia & I, const Motion & v, const std::string & hint)
+{
+  InertiaRate R;
+  const Scalar vh = cg::dot(b, v.v, I.h, hint + "_vh");
+  // J = A + A^T - h u^T - u h^T + 2 (u.h) 1,  A(r, c) = (w x Ibar_c)_r
+  auto A = [&](int r, int c, double sign) {
+    const int j = (r + 1) % 3, k = (r + 2) % 3;
+    return std::vector<Term>{Term{sign, {v.w[j], I.I(k, c)}}, Term{-sign, {v.w[k], I.I(j, c)}}};
+  };
+  for(int r = 0; r < 3; ++r)
+    for(int c = r; c < 3; ++c)
+    {
+      std::vector<Term> t = A(r, c, 1.0);
+      for(Term & x : A(c, r, 1.0)) t.push_back(x);
+      t.push_back(Term{-1.0, {I.h[r], v.v[c]}});
+      t.push_back(Term{-1.0, {v.v[r], I.h[c]}});
+      if(r == c) t.push_back(Term{2.0, {vh}});
+      R.J(r, c) = b.sum(t, fmt::format("{}_J{}{}", hint, r, c));
+      R.J(c, r) = R.J(r, c);
+    }
+  // hd = w x h + m u
+  for(int i = 0; i < 3; ++i)
+  {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    R.hd[i] = b.sum({Term{1.0, {v.w[j], I.h[k]}}, Term{-1.0, {v.w[k], I.h[j]}}, Term{1.0, {I.m, v.v[i]}}},
+                    fmt::format("{}_hd{}", hint, i));
+  }
+  return R;
+}
+
+InertiaRate add(Block & b, const InertiaRate & x, const InertiaRate & y, const std::string & hint)
+{
+  return {addSym(b, x.J, y.J, hint + "_J"), cg::add(b, x.hd, y.hd, hint + "_hd")};
+}
+
+Motion zeroMotion() { return Motion::zero(); }
+
+} // namespace
+
+std::vector<WorldBody> worldBodies(PassContext & ctx, const MotionState & m)
+{
+  Block & b = ctx.block();
+  std::vector<WorldBody> out(ctx.model().joints.size());
+  for(int k : ctx.allJoints())
+  {
+    const auto kk = static_cast<std::size_t>(k);
+    const MovingJoint & mj = ctx.joint(k);
+    const JointKernel & K = ctx.kernel(k);
+    const Xform & X0 = m.X0[kk];
+    WorldBody & w = out[kk];
+    b.comment(fmt::format("{}: world s, v, a, I, I v, I a + v x* I v, dI/dt", mj.tag));
+    for(std::size_t d = 0; d < K.S.size(); ++d) w.s.push_back(invApply(b, X0, K.S[d], fmt::format("{}_s{}", mj.tag, d)));
+    w.v = invApply(b, X0, m.v[kk], mj.tag + "_vw");
+    w.a = invApply(b, X0, m.a[kk], mj.tag + "_aw");
+    w.I = transApply(b, X0, bodyInertia(mj), mj.tag + "_Iw");
+    w.h = cg::apply(b, w.I, w.v, mj.tag + "_hw");
+    w.g = cg::add(b, cg::apply(b, w.I, w.a, mj.tag + "_Ia"), crossDual(b, w.v, w.h, mj.tag + "_vxh"), mj.tag + "_gw");
+    w.Id = inertiaRate(b, w.I, w.v, mj.tag + "_Id");
+  }
+  return out;
+}
+
+std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<WorldBody> & w)
+{
+  Block & b = ctx.block();
+  const RobotModel & rm = ctx.model();
+  std::vector<SubtreeSums> c(rm.joints.size());
+  for(std::size_t k = 0; k < rm.joints.size(); ++k) c[k] = {w[k].I, w[k].Id, w[k].h, w[k].g};
+  b.comment("subtree sums (world): Ic, dIc/dt, momentum, inertial force");
+  for(std::size_t k = rm.joints.size(); k-- > 0;)
+  {
+    const int p = rm.joints[k].parent;
+    if(p < 0) continue;
+    const auto pk = static_cast<std::size_t>(p);
+    const std::string h = rm.joints[pk].tag + "c";
+    c[pk].Ic = cg::add(b, c[pk].Ic, c[k].Ic, h + "_I");
+    c[pk].Idc = add(b, c[pk].Idc, c[k].Idc, h + "_Id");
+    c[pk].Hc = cg::add(b, c[pk].Hc, c[k].Hc, h + "_H");
+    c[pk].Gc = cg::add(b, c[pk].Gc, c[k].Gc, h + "_G");
+  }
+  return c;
+}
+
+void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
+                     const Eigen::Vector3d & gravity, const std::function<void(int, int, const Scalar &, const Scalar &)> & onEntry)
+{
+  Block & b = ctx.block();
+  const RobotModel & rm = ctx.model();
+  const std::size_t n = rm.joints.size();
+  // u_k = Ic_i s_k, b_k = dIc_i s_k - s_k x* Hc_i for every dof k (of joint i)
+  std::vector<std::vector<Force>> u(n), bk(n);
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t d = 0; d < w[i].s.size(); ++d)
+    {
+      const std::string h = fmt::format("{}_{}", rm.joints[i].tag, d);
+      u[i].push_back(cg::apply(b, c[i].Ic, w[i].s[d], h + "u"));
+      bk[i].push_back(sub(b, apply(b, c[i].Idc, w[i].s[d], h + "Ids"), crossDual(b, w[i].s[d], c[i].Hc, h + "sxH"),
+                          h + "b"));
+    }
+  // a_0 = [0; -g] as the forward pass uses it (the root's inherited acceleration)
+  Motion a0 = Motion::zero();
+  for(int i = 0; i < 3; ++i) a0.v[i] = Scalar::constant(-gravity[i]);
+  for(std::size_t j = 0; j < n; ++j)
+  {
+    const MovingJoint & mj = rm.joints[j];
+    const bool forward = mj.joint.forward();
+    const int p = mj.parent;
+    const Motion v_p = p < 0 ? zeroMotion() : w[static_cast<std::size_t>(p)].v;
+    const Motion a_p = p < 0 ? a0 : w[static_cast<std::size_t>(p)].a;
+    // inherited by the subtree of j: of λ(j), or of j when S is carried by the predecessor
+    const Motion & wv = forward ? v_p : w[j].v;
+    const Motion & aw = forward ? a_p : w[j].a;
+    const Motion & vCarrier = forward ? w[j].v : v_p;
+    b.comment(fmt::format("{}: d tau / d q and d tau / d alpha, columns of {}", mj.tag, mj.name));
+    for(std::size_t d = 0; d < w[j].s.size(); ++d)
+    {
+      const Motion & s = w[j].s[d];
+      const int col = mj.vIndex + static_cast<int>(d);
+      const std::string h = fmt::format("{}_{}", mj.tag, d);
+      const Motion yvQ = cross(b, wv, s, h + "yv");
+      const Motion yaQ = add(b, cross(b, aw, s, h + "axs"), cross(b, cross(b, s, wv, h + "sxw"), wv, h + "sxwxw"), h + "ya");
+      const Motion yaA = add(b, cross(b, vCarrier, s, h + "sd"), yvQ, h + "yaA");
+      // dF of the subtree of j (for the ancestors and for j's own dofs when not carried):
+      // dFq = s x* Gc + Ic yaQ + Bc yvQ, dFa = Ic yaA + Bc s, with Bc y = dIc y + y x* Hc
+      const bool needDF = p >= 0 || !forward;
+      Force dFq, dFa;
+      if(needDF)
+      {
+        const SubtreeSums & cj = c[j];
+        dFq = cg::add(b, cg::add(b, crossDual(b, s, cj.Gc, h + "sxG"), cg::apply(b, cj.Ic, yaQ, h + "Iya"), h + "dFq1"),
+                      cg::add(b, apply(b, cj.Idc, yvQ, h + "Idyv"), crossDual(b, yvQ, cj.Hc, h + "yvxH"), h + "dFq2"), h + "dFq");
+        dFa = cg::add(b, cg::apply(b, cj.Ic, yaA, h + "IyaA"),
+                      cg::add(b, apply(b, cj.Idc, s, h + "Ids"), crossDual(b, s, cj.Hc, h + "sxH"), h + "dFa2"), h + "dFa");
+      }
+      // the subtree of j: joints i >= j whose support path contains j
+      for(std::size_t i = j; i < n; ++i)
+      {
+        bool inSub = false;
+        for(int a = static_cast<int>(i); a >= 0 && !inSub; a = rm.joints[static_cast<std::size_t>(a)].parent)
+          inSub = a == static_cast<int>(j);
+        if(!inSub) continue;
+        const bool carried = i != j || forward;
+        for(std::size_t e = 0; e < w[i].s.size(); ++e)
+        {
+          const int row = rm.joints[i].vIndex + static_cast<int>(e);
+          const std::string hk = fmt::format("d{}_{}", row, col);
+          const Scalar dq = carried ? b.sum({Term{1.0, {dot(b, yaQ, u[i][e], hk + "qa")}},
+                                             Term{1.0, {dot(b, yvQ, bk[i][e], hk + "qv")}}},
+                                            hk + "q")
+                                    : dot(b, w[i].s[e], dFq, hk + "q");
+          const Scalar da = b.sum({Term{1.0, {dot(b, yaA, u[i][e], hk + "aa")}}, Term{1.0, {dot(b, s, bk[i][e], hk + "av")}}},
+                                  hk + "a");
+          onEntry(row, col, dq, da);
+        }
+      }
+      for(int a = p; a >= 0; a = rm.joints[static_cast<std::size_t>(a)].parent)
+      {
+        const auto ak = static_cast<std::size_t>(a);
+        for(std::size_t e = 0; e < w[ak].s.size(); ++e)
+        {
+          const int row = rm.joints[ak].vIndex + static_cast<int>(e);
+          const std::string hk = fmt::format("d{}_{}", row, col);
+          onEntry(row, col, dot(b, w[ak].s[e], dFq, hk + "q"), dot(b, w[ak].s[e], dFa, hk + "a"));
+        }
+      }
+    }
+  }
+}
+
+} // namespace rbdgen::passes

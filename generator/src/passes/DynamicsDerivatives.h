@@ -1,0 +1,55 @@
+#pragma once
+// The passes of the inverse dynamics derivatives (runtime: rbd/IDDerivatives.h, which states the
+// equations), all in world coordinates so that sums over a subtree need no transform:
+//   worldBodies:  s_k, v_k, a_k (a_0 = [0; -g]), I_k, h_k = I_k v_k, g_k = I_k a_k + v_k x* h_k and
+//                 dI_k/dt = v_k x* I_k - I_k v_k x = [[J, hd^], [hd^T, 0]],
+//                 J = A + A^T - h v^T - v h^T + 2 (v.h) 1 with A = w^ Ibar, hd = w x h + m v
+//   subtreeSums:  Ic, dIc/dt, Hc = sum h, Gc = sum g over each joint's subtree (leaves to root)
+//   derivativePairs: for dof m of joint j and dof k of joint i in the subtree of j, with
+//                 u_k = Ic_i s_k, b_k = Bc_i^T s_k = dIc_i s_k - s_k x* Hc_i:
+//                 dtau_k/dq_m = u_k . (a_w x s_m + (s_m x w) x w) + b_k . (w x s_m)
+//                 dtau_k/dalpha_m = u_k . (sdot_m + w x s_m) + b_k . s_m
+//                 and for k on a strict ancestor a of j: s_k . dF_j (the force change of j's subtree).
+
+#include <functional>
+#include <vector>
+
+#include "ForwardMotion.h"
+
+namespace rbdgen::passes
+{
+
+/// dI/dt of a rigid-body inertia moving with a twist (m = 0 in the rigid-body layout).
+struct InertiaRate
+{
+  Mat3 J;  ///< symmetric
+  Vec3 hd;
+};
+
+struct WorldBody
+{
+  std::vector<Motion> s; ///< motion subspace columns
+  Motion v, a;           ///< velocity, acceleration (gravity as a_0 = [0; -g])
+  Inertia I;
+  Force h, g;            ///< momentum I v, inertial force I a + v x* I v
+  InertiaRate Id;        ///< dI/dt
+};
+
+struct SubtreeSums
+{
+  Inertia Ic;
+  InertiaRate Idc;
+  Force Hc, Gc;
+};
+
+/// World quantities of every moving joint's body from a forward pass with poses, velocity and acceleration.
+std::vector<WorldBody> worldBodies(PassContext & ctx, const MotionState & m);
+/// Sums over each joint's subtree.
+std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<WorldBody> & w);
+/// d tau/dq and d tau/dalpha entries, handed to onEntry(row, col, dq, dalpha); entries never
+/// handed over are zero. gravity: the world gravity of the forward pass (m/s^2), a_0 = [0; -gravity].
+void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
+                     const Eigen::Vector3d & gravity,
+                     const std::function<void(int row, int col, const Scalar & dq, const Scalar & da)> & onEntry);
+
+} // namespace rbdgen::passes

@@ -2,7 +2,8 @@
 #
 #   find_package(rbdgen CONFIG REQUIRED)
 #   generate_robot_dynamics(TARGET panda_dynamics URDF robots/panda.urdf
-#                           [NAMESPACE panda] [FLOATING_BASE] [BASE_LINK link] [OUTPUT_DIR dir] [STRICT])
+#                           [NAMESPACE panda] [FLOATING_BASE] [BASE_LINK link] [OUTPUT_DIR dir] [STRICT]
+#                           [DERIVATIVES])
 #   generate_robot_dynamics(TARGET quadruped_sim SCENE scenes/quadruped_ground.xml
 #                           [NAMESPACE ns] [OUTPUT_DIR dir] [STRICT])
 #   target_link_libraries(my_controller PRIVATE panda_dynamics)
@@ -19,7 +20,8 @@
 # mass matrix checks: joints moving only massless links, two free joints with a massless link
 # between them, dofs of negligible effective inertia) are printed by the build as
 # "rbdgen: warning: ..." (Ninja and Make show a custom command's output) and never fail it.
-# STRICT: the mass matrix checks are errors instead of warnings.
+# STRICT: the mass matrix checks are errors instead of warnings. DERIVATIVES: the header also has
+# inverse_dynamics_derivatives() and forward_dynamics_derivatives() (rbdgen generate --derivatives).
 include_guard(GLOBAL)
 
 function(_rbdgen_identifier out text)
@@ -36,7 +38,7 @@ function(_rbdgen_identifier out text)
 endfunction()
 
 function(generate_robot_dynamics)
-  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE;STRICT" "TARGET;URDF;SCENE;NAMESPACE;BASE_LINK;OUTPUT_DIR" "")
+  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE;STRICT;DERIVATIVES" "TARGET;URDF;SCENE;NAMESPACE;BASE_LINK;OUTPUT_DIR" "")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "generate_robot_dynamics: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
@@ -80,6 +82,9 @@ function(generate_robot_dynamics)
   endif()
   if(arg_FLOATING_BASE)
     list(APPEND options --floating-base)
+  endif()
+  if(arg_DERIVATIVES)
+    list(APPEND options --derivatives)
   endif()
   if(arg_BASE_LINK)
     list(APPEND options --base-link "${arg_BASE_LINK}")

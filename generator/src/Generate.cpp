@@ -151,6 +151,7 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   const bool fd = rm.regularMassMatrix();
   v["fd_algorithm"] = fd ? fdAlgorithm : "none (singular mass matrix)";
   v["has_forward_dynamics"] = fd ? "true" : "false";
+  v["has_derivatives"] = derivatives ? "true" : "false";
   v["fn_forward_kinematics"] = emit::forwardKinematicsBody(rm).text;
   v["fn_kinematics"] = emit::kinematicsBody(rm).text;
   v["fn_inverse_dynamics"] = emit::rneaBody(rm, {true, true, true, false}).text;
@@ -197,14 +198,8 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   v["fn_jacobian_dot_times_alpha"] = emit::jacobianDotTimesAlphaBody(rm).text;
   v["fn_com_jacobian"] = emit::comJacobianBody(rm).text;
   v["fn_centroidal_momentum_matrix"] = emit::centroidalMomentumMatrixBody(rm).text;
-  v["fn_inverse_dynamics_derivatives"] = derivatives ? emit::inverseDynamicsDerivativesBody(rm).text : "";
-  v["fn_mass_matrix_factors"] = derivatives && fd ? emit::massMatrixFactorsBody(rm).text : "";
-  {
-    std::string parents;
-    for(int l : emit::dofParents(rm)) parents += fmt::format("{}{}", parents.empty() ? "" : ", ", l);
-    v["dof_parent"] = parents;
-    v["njoint_dofs"] = std::to_string(rm.nv);
-  }
+  if(derivatives) v["fn_inverse_dynamics_derivatives"] = emit::inverseDynamicsDerivativesBody(rm).text;
+  if(derivatives && fd) v["fn_forward_dynamics_derivatives"] = emit::forwardDynamicsDerivativesBody(rm).text;
   v["shared_passes"] = shared.definitions();
   v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
   const std::string text = selectSections(templateText("dynamics.hpp.in"),

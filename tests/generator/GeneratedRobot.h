@@ -34,6 +34,11 @@ struct GeneratedFunctions
   void (*jacobianDotTimesAlphaKin)(int body, const S * q, const S * alpha, S * out); ///< 6, via kinematics()
   void (*comJacobian)(const S * q, S * J);                 ///< 3 x nv
   void (*centroidalMomentumMatrix)(const S * q, S * A);    ///< 6 x nv
+  /// nv x nv each; null when generated without derivatives
+  void (*inverseDynamicsDerivatives)(const S * q, const S * alpha, const S * alphaD, S * dtauDq, S * dtauDalpha);
+  /// alphaD (nv), then nv x nv each; null without derivatives or forward dynamics
+  void (*forwardDynamicsDerivatives)(const S * q, const S * alpha, const S * tau, S * alphaD, S * dalphaDDq,
+                                     S * dalphaDDalpha, S * Minv);
 };
 
 struct GeneratedRobot

@@ -14,6 +14,7 @@
 #include <rbd/FA.h>
 #include <rbd/Momentum.h>
 #include <rbd/FD.h>
+#include <rbd/FDDerivatives.h>
 #include <rbd/FK.h>
 #include <rbd/FV.h>
 #include <rbd/ID.h>
@@ -36,6 +37,7 @@ namespace
 using rbdgentest::GeneratedRobot;
 
 constexpr int kStates = 100;
+constexpr int kPointStates = 6; ///< states of the point-Jacobian checks (each builds a runtime Jacobian per link)
 constexpr double kTolDouble = 1e-12;
 // float: unit roundoff 6e-8, grown by the recursion depth and magnitudes (measured worst: ~1e-6).
 constexpr double kTolFloatKinematics = 2e-5;
@@ -306,20 +308,21 @@ TEST_P(Generated, JacobianAndCenterOfMass)
     {
       auto & jac = jacs[static_cast<std::size_t>(i)];
       jac.fullJacobian(ref.mb(), jac.jacobian(ref.mb(), ref.mbc), full);
+      g().d.jacobian(i, q.data(), J.data());
+      g().d.jacobianQ(i, q.data(), JQ.data());
+      g().f.jacobian(i, qf.data(), JF.data());
+      g().f.jacobianQ(i, qf.data(), JQF.data());
+      jLog.add(err(J, full), err(JF, full));
+      jqLog.add(err(JQ, full), err(JQF, full));
+      if(s >= kPointStates) continue; // the point variants (a runtime Jacobian per link) on fewer states
       // the runtime's Jacobian at the same point, given in the MultiBody body frame
       const sva::PTransformd & X = ref.X_mb_link[static_cast<std::size_t>(i)];
       rbd::Jacobian jacP(ref.mb(), ref.mb().body(i).name(), X.translation() + X.rotation().transpose() * point);
       jacP.fullJacobian(ref.mb(), jacP.jacobian(ref.mb(), ref.mbc), fullP);
-      g().d.jacobian(i, q.data(), J.data());
-      g().d.jacobianQ(i, q.data(), JQ.data());
       g().d.jacobianPoint(i, q.data(), point.data(), JP.data());
       g().d.jacobianKinPoint(i, q.data(), point.data(), JKP.data());
-      g().f.jacobian(i, qf.data(), JF.data());
-      g().f.jacobianQ(i, qf.data(), JQF.data());
       g().f.jacobianPoint(i, qf.data(), pointF.data(), JPF.data());
       g().f.jacobianKinPoint(i, qf.data(), pointF.data(), JKPF.data());
-      jLog.add(err(J, full), err(JF, full));
-      jqLog.add(err(JQ, full), err(JQF, full));
       jpLog.add(err(JP, fullP), err(JPF, fullP));
       jkpLog.add(err(JKP, fullP), err(JKPF, fullP));
     }
@@ -403,6 +406,63 @@ TEST_P(Generated, VelocitiesAccelerationsMomentum)
   }
 }
 
+// Derivatives (robots generated with derivatives): against the runtime's analytic derivatives
+// (rbd/IDDerivatives.h, FDDerivatives.h), themselves tested against long double differences and
+// AutoDiff (tests/dynamics/test_derivatives.cpp). d alphaD carries H^-1: bounds grow with cond(H).
+class GeneratedDerivatives : public Generated
+{
+};
+
+TEST_P(GeneratedDerivatives, MatchRuntime)
+{
+  ASSERT_NE(g().d.inverseDynamicsDerivatives, nullptr);
+  Reference ref(g());
+  rbdtest::Rng rng(6);
+  const int nv = g().nv;
+  ErrorLog dqLog{"dtau_dq"}, daLog{"dtau_dalpha"}, fqLog{"dalphaD_dq"}, faLog{"dalphaD_dalpha"}, miLog{"Minv"},
+      adLog{"fd_derivatives alphaD"};
+  Eigen::MatrixXd dq(nv, nv), da(nv, nv), fq(nv, nv), fa(nv, nv), mi(nv, nv);
+  Eigen::MatrixXf dqF(nv, nv), daF(nv, nv), fqF(nv, nv), faF(nv, nv), miF(nv, nv);
+  Eigen::VectorXd ad(nv);
+  Eigen::VectorXf adF(nv);
+  rbd::InverseDynamicsDerivatives idr(ref.mb());
+  rbd::ForwardDynamicsDerivatives fdr(ref.mb());
+  for(int s = 0; s < kStates / 4; ++s)
+  {
+    ref.sample(rng);
+    const Eigen::VectorXd q = ref.q(), a = ref.alpha(), acc = ref.alphaD(), tau = ref.torque();
+    const Eigen::VectorXf qf = toFloat(q), af = toFloat(a), accf = toFloat(acc), tauf = toFloat(tau);
+    idr.inverseDynamicsDerivatives(ref.mb(), ref.mbc);
+    g().d.inverseDynamicsDerivatives(q.data(), a.data(), acc.data(), dq.data(), da.data());
+    g().f.inverseDynamicsDerivatives(qf.data(), af.data(), accf.data(), dqF.data(), daF.data());
+    dqLog.add(err(dq, idr.dtauDq()), err(dqF, idr.dtauDq()));
+    daLog.add(err(da, idr.dtauDalpha()), err(daF, idr.dtauDalpha()));
+    if(!g().d.forwardDynamicsDerivatives) continue;
+    fdr.forwardDynamicsDerivatives(ref.mb(), ref.mbc);
+    const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(fdr.Minv())).eigenvalues();
+    const double grow = std::max(1.0, ev.maxCoeff() / ev.minCoeff() * 1e-3);
+    g().d.forwardDynamicsDerivatives(q.data(), a.data(), tau.data(), ad.data(), fq.data(), fa.data(), mi.data());
+    g().f.forwardDynamicsDerivatives(qf.data(), af.data(), tauf.data(), adF.data(), fqF.data(), faF.data(), miF.data());
+    const std::pair<ErrorLog *, std::pair<double, double>> checks[] = {
+        {&adLog, {err(ad, fdr.alphaD()), err(adF, fdr.alphaD())}},
+        {&fqLog, {err(fq, fdr.dalphaDDq()), err(fqF, fdr.dalphaDDq())}},
+        {&faLog, {err(fa, fdr.dalphaDDalpha()), err(faF, fdr.dalphaDDalpha())}},
+        {&miLog, {err(mi, fdr.Minv()), err(miF, fdr.Minv())}}};
+    for(const auto & [log, e] : checks)
+    {
+      // d alphaD = -H^-1 d ID: two solvers differ by ~cond(H) eps times the magnitudes
+      EXPECT_LE(e.first, 10 * kTolDouble * grow) << log->what << ", state " << s;
+      EXPECT_LE(e.second, 10 * kTolFloatDynamics * grow) << log->what << ", state " << s;
+      log->add(e.first, e.second);
+    }
+  }
+  for(const ErrorLog * l : {&dqLog, &daLog})
+  {
+    EXPECT_LE(l->worstDouble, kTolDouble) << l->what;
+    EXPECT_LE(l->worstFloat, kTolFloatDynamics) << l->what;
+  }
+}
+
 TEST_P(Generated, NoHeapAllocation)
 {
   Reference ref(g());
@@ -412,6 +472,7 @@ TEST_P(Generated, NoHeapAllocation)
   const Eigen::Vector3d point(0.1, -0.2, 0.3);
   const int nv = g().nv, nb = g().nbodies;
   Eigen::VectorXd out(std::max(12 * nb, 6 * nv) + nv * nv), fext = Eigen::VectorXd::Zero(6 * nb);
+  Eigen::MatrixXd dA(nv, nv), dB(nv, nv), dC(nv, nv);
   long count = 0;
   {
     rbdgentest::AllocationScope scope;
@@ -436,6 +497,10 @@ TEST_P(Generated, NoHeapAllocation)
     g().d.jacobianDotTimesAlpha(nb - 1, q.data(), a.data(), out.data());
     g().d.comJacobian(q.data(), out.data());
     g().d.centroidalMomentumMatrix(q.data(), out.data());
+    if(g().d.inverseDynamicsDerivatives)
+      g().d.inverseDynamicsDerivatives(q.data(), a.data(), ad.data(), dA.data(), dB.data());
+    if(g().d.forwardDynamicsDerivatives)
+      g().d.forwardDynamicsDerivatives(q.data(), a.data(), ad.data(), out.data(), dA.data(), dB.data(), dC.data());
     count = scope.count();
   }
   EXPECT_EQ(count, 0) << "heap allocations during generated calls";
@@ -453,5 +518,15 @@ std::string robotName(const ::testing::TestParamInfo<const GeneratedRobot *> & i
 }
 
 INSTANTIATE_TEST_SUITE_P(Robots, Generated, ::testing::ValuesIn(rbdgentest::generatedRobots()), robotName);
+
+/// The robots generated with DERIVATIVES (all but the largest real ones: tests/generator/CMakeLists.txt).
+std::vector<const GeneratedRobot *> robotsWithDerivatives()
+{
+  std::vector<const GeneratedRobot *> out;
+  for(const GeneratedRobot * r : rbdgentest::generatedRobots())
+    if(r->d.inverseDynamicsDerivatives) out.push_back(r);
+  return out;
+}
+INSTANTIATE_TEST_SUITE_P(Robots, GeneratedDerivatives, ::testing::ValuesIn(robotsWithDerivatives()), robotName);
 
 } // namespace

@@ -76,8 +76,9 @@ std::vector<cg::Scalar> emitLtdlSolve(cg::Block & b, const Ltdl & f, std::vector
 /// Reads q, alpha, alphaD; fills `d.dtau_dq` and `d.dtau_dalpha` (zeroed before; tangent convention
 /// of rbd/IDDerivatives.h).
 EmittedBody inverseDynamicsDerivativesBody(const RobotModel & rm);
-/// Reads q; fills `f.L[k * nv + i]` and `f.invD[k]` (detail::Ltdl<S>) with the factors of H.
-EmittedBody massMatrixFactorsBody(const RobotModel & rm);
+/// Reads q, alpha, tau; fills `d.alphaD`, `d.dalphaD_dq`, `d.dalphaD_dalpha` and `d.Minv` (FdDerivatives<S>)
+/// calling nonlinear_effects() and inverse_dynamics_derivatives().
+EmittedBody forwardDynamicsDerivativesBody(const RobotModel & rm);
 /// Reads q, alpha, tau; fills `alphaD` (articulated-body algorithm).
 EmittedBody abaBody(const RobotModel & rm);
 

@@ -10,6 +10,7 @@
 #include <rbd/FK.h>
 #include <rbd/FV.h>
 #include <rbd/ID.h>
+#include <rbd/IDDerivatives.h>
 #include <rbd/Jacobian.h>
 #include <rbd/Momentum.h>
 
@@ -233,6 +234,49 @@ typename SceneDynamicsTpl<T>::VectorX SceneDynamicsTpl<T>::inverseDynamics(const
   checkSize(alphaD.size(), nv(), "alphaD");
   // tau = (H + A) alphaD + bias
   return massMatrix(q) * alphaD + generalizedBias(q, alpha, wrenches);
+}
+
+template<class T>
+typename SceneDynamicsTpl<T>::IdDerivatives SceneDynamicsTpl<T>::inverseDynamicsDerivatives(
+    const VectorX & q, const VectorX & alpha, const VectorX & alphaD, const Wrenches & wrenches) const
+{
+  using std::sqrt;
+  if(!scene_.contacts.empty())
+    throw std::logic_error(scene_.file + ": derivatives of a scene with contacts are not provided");
+  checkSize(alphaD.size(), nv(), "alphaD");
+  // rigid-body part: RNEA with the scene's gravity and wrenches; alpha = 0 inside it without
+  // velocity terms (then d/dalpha of that part is zero)
+  MultiBodyConfigTpl<T> mbc = kinematics(q, scene_.velocityTerms ? alpha : VectorX::Zero(nv()));
+  mbc.gravity = -gravityW_;
+  mbc.force = bodyForces(mbc, wrenches);
+  vectorToDof<T>(alphaD, mbc.alphaD);
+  InverseDynamicsDerivativesTpl<T> d(mb_);
+  d.inverseDynamicsDerivatives(mb_, mbc);
+  IdDerivatives out{d.dtauDq(), d.dtauDalpha()};
+  // + D alpha + friction alpha / sqrt(alpha^2 + v_s^2): d/dalpha_i = D_i + friction_i v_s^2 / (alpha_i^2 + v_s^2)^(3/2)
+  const T vs2 = T(scene_.frictionVelocity) * T(scene_.frictionVelocity);
+  for(int i = 0; i < nv(); ++i)
+  {
+    const T r = alpha[i] * alpha[i] + vs2;
+    out.dtauDalpha(i, i) += damping_[i] + friction_[i] * vs2 / (r * sqrt(r));
+  }
+  return out;
+}
+
+template<class T>
+typename SceneDynamicsTpl<T>::FdDerivatives SceneDynamicsTpl<T>::forwardDynamicsDerivatives(
+    const VectorX & q, const VectorX & alpha, const VectorX & tau, const Wrenches & wrenches) const
+{
+  FdDerivatives out;
+  out.alphaD = forwardDynamics(q, alpha, tau, wrenches);
+  const MatrixX M = massMatrix(q);
+  const MatrixX identity = MatrixX::Identity(nv(), nv());
+  Eigen::LLT<MatrixX> llt(M);
+  out.Minv = llt.info() == Eigen::Success ? MatrixX(llt.solve(identity)) : MatrixX(M.ldlt().solve(identity));
+  const IdDerivatives id = inverseDynamicsDerivatives(q, alpha, out.alphaD, wrenches);
+  out.dalphaDDq = -out.Minv * id.dtauDq;
+  out.dalphaDDalpha = -out.Minv * id.dtauDalpha;
+  return out;
 }
 
 template<class T>

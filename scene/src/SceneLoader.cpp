@@ -166,7 +166,7 @@ void readExternalWrench(Context & cx, const XMLElement * e, Scene & s)
 void readOutputs(Context & cx, const XMLElement * e, Scene & s)
 {
   cx.rd.onlyAttributes(e, "", {});
-  cx.rd.onlyChildren(e, "", {"pose", "jacobian", "com", "momentum", "energy"});
+  cx.rd.onlyChildren(e, "", {"pose", "jacobian", "com", "momentum", "energy", "derivatives"});
   for(const XMLElement * c = e->FirstChildElement(); c; c = c->NextSiblingElement())
   {
     const std::string tag = c->Name();
@@ -184,7 +184,13 @@ void readOutputs(Context & cx, const XMLElement * e, Scene & s)
     }
     cx.rd.onlyAttributes(c, "", {});
     cx.rd.onlyChildren(c, "", {});
-    bool & flag = tag == "com" ? s.outputs.com : tag == "momentum" ? s.outputs.momentum : s.outputs.energy;
+    if(tag == "derivatives" && !s.contacts.empty())
+      cx.rd.fail(c, "", "derivatives of a scene with <contacts> are not provided yet (the compliant contact "
+                        "forces are not differentiated); remove <contacts> or <derivatives/>");
+    bool & flag = tag == "com"           ? s.outputs.com
+                  : tag == "momentum"    ? s.outputs.momentum
+                  : tag == "derivatives" ? s.outputs.derivatives
+                                         : s.outputs.energy;
     if(flag) cx.rd.fail(c, "", "output given twice");
     flag = true;
   }

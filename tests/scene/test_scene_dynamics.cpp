@@ -371,3 +371,68 @@ TEST(SceneDynamics, MomentumAndEnergyDefinitions)
   EXPECT_NEAR(static_cast<double>(m.dyn.kineticEnergy(s.q, s.alpha) - bare.dyn.kineticEnergy(s.q, s.alpha)),
               static_cast<double>(0.5L * 0.3L * s.alpha[i] * s.alpha[i]), 1e-15);
 }
+
+// Scene derivatives (inverse and forward dynamics; wrenches held constant) against long double
+// Richardson central differences along q ⊕ ε e_m and alpha + ε e_m: every effect but contacts,
+// velocity terms on and off. Truncation O(h^4) with h = 1e-3, round-off 1e-19/h: bound 1e-9 (ID),
+// 1e-7 (FD: M^-1 amplifies).
+TEST(SceneDynamics, DerivativesMatchLongDoubleDifferences)
+{
+  // df/dt at 0: central differences with one Richardson step (error O(h^4))
+  auto richardson = [](auto f, LD h) {
+    const VecX<LD> d1 = (f(h) - f(-h)) / (2 * h), d2 = (f(h / 2) - f(-h / 2)) / h;
+    return VecX<LD>((4 * d2 - d1) / 3);
+  };
+  std::mt19937 rng(21);
+  const char * effects = R"(  <gravity x="0.4" y="-1" z="-9.81"/>
+  <joints friction_velocity="0.05">
+    <joint name="FL_hip_joint" armature="0.01" damping="0.3" friction="0.2"/>
+    <joint name="HR_calf_joint" armature="0.02" friction="0.5"/>
+  </joints>
+  <external_wrench body="trunk"/>
+  <external_wrench body="FR_calf"/>)";
+  for(bool velocity : {true, false})
+  {
+    const std::string xml = sceneXml("quadruped.urdf",
+                                     std::string("<velocity_terms enabled=\"") + (velocity ? "true" : "false") + "\"/>" + effects,
+                                     "floating");
+    Model<LD> m(sceneFromText(xml));
+    const auto & dyn = m.dyn;
+    const int nv = dyn.nv();
+    double worst[4] = {0, 0, 0, 0};
+    for(int trial = 0; trial < 3; ++trial)
+    {
+      const auto s = randomState<LD>(dyn.mb(), rng);
+      const auto w = randomWrenches<LD>(m.scene.externalWrenches.size(), rng);
+      const VecX<LD> a = randomVector<LD>(nv, rng, 3.0), tau = randomVector<LD>(nv, rng, 5.0);
+      const auto id = dyn.inverseDynamicsDerivatives(s.q, s.alpha, a, w);
+      const auto fd = dyn.forwardDynamicsDerivatives(s.q, s.alpha, tau, w);
+      Eigen::Matrix<LD, Eigen::Dynamic, Eigen::Dynamic> nq(nv, nv), na(nv, nv), fq(nv, nv), fa(nv, nv);
+      // friction alpha / sqrt(alpha^2 + vs^2) with vs = 0.05 has derivatives growing like vs^-k: smaller steps in alpha
+      const LD h = 1e-3L, hAlpha = 1e-5L;
+      for(int k = 0; k < nv; ++k)
+      {
+        const VecX<LD> e = VecX<LD>::Unit(nv, k);
+        auto qAt = [&](LD t) { return rbd::integrateConfiguration(dyn.mb(), s.q, VecX<LD>(e * t)); };
+        nq.col(k) = richardson([&](LD t) { return VecX<LD>(dyn.inverseDynamics(qAt(t), s.alpha, a, w)); }, h);
+        na.col(k) = richardson([&](LD t) { return VecX<LD>(dyn.inverseDynamics(s.q, VecX<LD>(s.alpha + e * t), a, w)); }, hAlpha);
+        fq.col(k) = richardson([&](LD t) { return VecX<LD>(dyn.forwardDynamics(qAt(t), s.alpha, tau, w)); }, h);
+        fa.col(k) = richardson([&](LD t) { return VecX<LD>(dyn.forwardDynamics(s.q, VecX<LD>(s.alpha + e * t), tau, w)); }, hAlpha);
+      }
+      const double e[4] = {relErr(id.dtauDq, nq), relErr(id.dtauDalpha, na), relErr(fd.dalphaDDq, fq), relErr(fd.dalphaDDalpha, fa)};
+      for(int i = 0; i < 4; ++i) worst[i] = std::max(worst[i], e[i]);
+      EXPECT_LT(e[0], 1e-11);
+      EXPECT_LT(e[1], 1e-11);
+      EXPECT_LT(e[2], 1e-9);
+      EXPECT_LT(e[3], 1e-9);
+      const Eigen::Matrix<LD, Eigen::Dynamic, Eigen::Dynamic> I = fd.Minv * dyn.massMatrix(s.q);
+      EXPECT_LT(relErr(I, Eigen::Matrix<LD, Eigen::Dynamic, Eigen::Dynamic>::Identity(nv, nv)), 1e-12);
+    }
+    std::cout << "[ measured ] scene derivatives (velocity terms " << velocity << ") vs long double differences: dtau/dq "
+              << worst[0] << ", dtau/dalpha " << worst[1] << ", dalphaD/dq " << worst[2] << ", dalphaD/dalpha " << worst[3] << "\n";
+  }
+  // contacts: not provided, and said so
+  Model<double> withContacts(sceneFromText(quadrupedAllEffects(true)));
+  const auto s = randomState<double>(withContacts.dyn.mb(), rng);
+  EXPECT_THROW(withContacts.dyn.inverseDynamicsDerivatives(s.q, s.alpha, s.alpha), std::logic_error);
+}

@@ -37,6 +37,11 @@ struct SceneAdapter
   void (*kineticEnergy)(const double * q, const double * alpha, double * out);
   void (*potentialEnergy)(const double * q, double * out);
   void (*energy)(const double * q, const double * alpha, double * out);
+  /// Derivatives (null without <derivatives/>): nv x nv each; fd: alphaD (nv) then three nv x nv.
+  void (*inverseDynamicsDerivatives)(const double * q, const double * alpha, const double * alphaD, const double * w,
+                                     double * dq, double * da);
+  void (*forwardDynamicsDerivatives)(const double * q, const double * alpha, const double * tau, const double * w,
+                                     double * alphaD, double * dq, double * da, double * Minv);
   /// Every float function once at the initial state with random-ish inputs: all results finite.
   bool (*floatFinite)();
 };

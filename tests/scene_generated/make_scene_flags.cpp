@@ -67,6 +67,7 @@ int main(int argc, char ** argv)
     flag("SG_MOMENTUM", scene.outputs.momentum);
     flag("SG_ENERGY", scene.outputs.energy);
     flag("SG_POTENTIAL", scene.outputs.energy && gravity);
+    flag("SG_DERIVATIVES", scene.outputs.derivatives);
     s += "#define SG_POSES(X)";
     for(const auto & l : scene.outputs.poses) s += " X(" + ident(l) + ", \"" + l + "\")";
     s += "\n#define SG_JACOBIANS(X)";

@@ -137,6 +137,7 @@ TEST_P(SceneGenerated, PresenceMatchesTheScene)
   EXPECT_EQ(g().centerOfMass != nullptr, s.outputs.com);
   EXPECT_EQ(g().centroidalMomentum != nullptr, s.outputs.momentum);
   EXPECT_EQ(g().energy != nullptr, s.outputs.energy);
+  EXPECT_EQ(g().inverseDynamicsDerivatives != nullptr, s.outputs.derivatives);
   EXPECT_EQ(g().nposes, static_cast<int>(s.outputs.poses.size()));
   EXPECT_EQ(g().njacobians, static_cast<int>(s.outputs.jacobians.size()));
   // has_forward_dynamics exactly where the runtime's H + diag(armature) is regular (rank-revealing).
@@ -222,6 +223,45 @@ TEST_P(SceneGenerated, Dynamics)
     EXPECT_LE(l->worst, kTol) << l->what;
   }
   EXPECT_EQ(lFD.n, g().forwardDynamics ? kStates : 0);
+}
+
+// Derivatives of the scene's dynamics against the runtime's (SceneDynamics: the runtime's analytic
+// derivatives plus the joint terms; tested against long double differences in tests/scene).
+TEST_P(SceneGenerated, Derivatives)
+{
+  Reference ref(g());
+  if(!ref.scene.outputs.derivatives)
+  {
+    EXPECT_EQ(g().inverseDynamicsDerivatives, nullptr);
+    EXPECT_EQ(g().forwardDynamicsDerivatives, nullptr);
+    return;
+  }
+  rbdtest::Rng rng(5);
+  const int nv = g().nv;
+  Log lq{"dtau_dq"}, la{"dtau_dalpha"}, lfq{"dalphaD_dq"}, lfa{"dalphaD_dalpha"}, lmi{"Minv"}, lad{"fd_derivatives alphaD"};
+  Eigen::MatrixXd dq(nv, nv), da(nv, nv), fq(nv, nv), fa(nv, nv), mi(nv, nv);
+  Vec ad(nv);
+  for(int k = 0; k < kStates; ++k)
+  {
+    const State s = randomState(rng, ref, g());
+    const auto W = toWrenches(s.w);
+    const auto r = ref.dyn.inverseDynamicsDerivatives(s.q, s.alpha, s.alphaD, W);
+    g().inverseDynamicsDerivatives(s.q.data(), s.alpha.data(), s.alphaD.data(), s.w.data(), dq.data(), da.data());
+    lq.add(err(dq, r.dtauDq));
+    la.add(err(da, r.dtauDalpha));
+    if(!g().forwardDynamicsDerivatives) continue;
+    const auto f = ref.dyn.forwardDynamicsDerivatives(s.q, s.alpha, s.tau, W);
+    g().forwardDynamicsDerivatives(s.q.data(), s.alpha.data(), s.tau.data(), s.w.data(), ad.data(), fq.data(), fa.data(),
+                                   mi.data());
+    lad.add(err(ad, f.alphaD));
+    lmi.add(err(mi, f.Minv));
+    lfq.add(err(fq, f.dalphaDDq));
+    lfa.add(err(fa, f.dalphaDDalpha));
+  }
+  for(const Log * l : {&lq, &la, &lad, &lmi}) EXPECT_LE(l->worst, kTol) << l->what;
+  // -M^-1 dID: two solvers (LLT vs tree-sparse LTDL) differ by ~cond(M) eps times |dID|
+  for(const Log * l : {&lfq, &lfa}) EXPECT_LE(l->worst, 100 * kTol) << l->what;
+  EXPECT_EQ(lfq.n, g().forwardDynamicsDerivatives ? kStates : 0);
 }
 
 TEST_P(SceneGenerated, Outputs)

@@ -45,6 +45,14 @@ struct SceneEffects
 /// - contact and wrench torques.
 EmittedBody sceneRneaBody(const RobotModel & rm, const SceneEffects & fx, bool withAlphaD);
 
+/// Reads q, alpha, alphaD [, wrenches]; fills d.dtau_dq, d.dtau_dalpha (zeroed before) of the scene's
+/// inverse dynamics (wrenches held constant; no contacts: the caller refuses them).
+EmittedBody sceneInverseDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx);
+/// Reads q, alpha, tau [, wrenches]; fills d (FdDerivatives<S>) of the scene's forward dynamics;
+/// biasCall: the generalized_bias call (empty: none), wrenchArg ", wrenches" or "".
+EmittedBody sceneForwardDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx, const std::string & biasCall,
+                                                 const std::string & wrenchArg);
+
 /// Reads q, alpha; fills `res[c]` (world force at contact c, 3-vector).
 EmittedBody contactForcesBody(const RobotModel & rm, const SceneEffects & fx);
 

@@ -274,6 +274,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
       {"rk4", rk4},
       {"semi_implicit_euler", scene.integrator == rbd::scene::Integrator::SemiImplicitEuler},
       {"explicit_euler", scene.integrator == rbd::scene::Integrator::ExplicitEuler},
+      {"derivatives", scene.outputs.derivatives},
   };
   std::map<std::string, std::string> v;
   v["provenance"] = provenance;
@@ -351,6 +352,15 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
     }
   }
   else v["no_forward_dynamics_note"] = noForwardDynamicsNote(singular);
+  if(scene.outputs.derivatives)
+  {
+    v["wrench_doc_arg"] = wrenches ? ", wrenches" : "";
+    v["fn_inverse_dynamics_derivatives"] = sceneInverseDynamicsDerivativesBody(rm, fx).text;
+    if(fd)
+      v["fn_forward_dynamics_derivatives"] =
+          sceneForwardDynamicsDerivativesBody(rm, fx, genBias ? "generalized_bias<S>(q, alpha" + wrenchArg + ")" : "", wrenchArg)
+              .text;
+  }
   v["outputs"] = outputs(rm, scene, fx);
   return fill("scene_dynamics.hpp.in", flags, v);
 }

@@ -122,7 +122,7 @@ std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<WorldB
 }
 
 void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
-                     const Eigen::Vector3d & gravity, const std::function<void(int, int, const Scalar &, const Scalar &)> & onEntry)
+                     const Eigen::Vector3d & gravity, const std::vector<Force> & fextSums, const std::function<void(int, int, const Scalar &, const Scalar &)> & onEntry)
 {
   Block & b = ctx.block();
   const RobotModel & rm = ctx.model();
@@ -184,10 +184,15 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
         {
           const int row = rm.joints[i].vIndex + static_cast<int>(e);
           const std::string hk = fmt::format("d{}_{}", row, col);
-          const Scalar dq = carried ? b.sum({Term{1.0, {dot(b, yaQ, u[i][e], hk + "qa")}},
-                                             Term{1.0, {dot(b, yvQ, bk[i][e], hk + "qv")}}},
-                                            hk + "q")
-                                    : dot(b, w[i].s[e], dFq, hk + "q");
+          Scalar dq;
+          if(!carried) dq = dot(b, w[i].s[e], dFq, hk + "q");
+          else
+          {
+            std::vector<Term> t{Term{1.0, {dot(b, yaQ, u[i][e], hk + "qa")}}, Term{1.0, {dot(b, yvQ, bk[i][e], hk + "qv")}}};
+            if(!fextSums.empty()) // s_k . (s_m x* Fext_i)
+              t.push_back(Term{1.0, {dot(b, w[i].s[e], crossDual(b, s, fextSums[i], hk + "sxF"), hk + "qf")}});
+            dq = b.sum(t, hk + "q");
+          }
           const Scalar da = b.sum({Term{1.0, {dot(b, yaA, u[i][e], hk + "aa")}}, Term{1.0, {dot(b, s, bk[i][e], hk + "av")}}},
                                   hk + "a");
           onEntry(row, col, dq, da);

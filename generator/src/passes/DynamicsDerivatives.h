@@ -47,9 +47,12 @@ std::vector<WorldBody> worldBodies(PassContext & ctx, const MotionState & m);
 /// Sums over each joint's subtree.
 std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<WorldBody> & w);
 /// d tau/dq and d tau/dalpha entries, handed to onEntry(row, col, dq, dalpha); entries never
-/// handed over are zero. gravity: the world gravity of the forward pass (m/s^2), a_0 = [0; -gravity].
+/// handed over are zero. gravity: the world gravity of the forward pass (m/s^2), a_0 = [0; -gravity]
+/// (zero: none). fextSums: when not empty, per joint the sum over its subtree of the external
+/// wrenches (world, at the world origin) that the inverse dynamics subtracts, held constant: they
+/// add s_k . (s_m x* Fext_i) to the pairs whose s_k moves with joint m.
 void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
-                     const Eigen::Vector3d & gravity,
+                     const Eigen::Vector3d & gravity, const std::vector<Force> & fextSums,
                      const std::function<void(int row, int col, const Scalar & dq, const Scalar & da)> & onEntry);
 
 } // namespace rbdgen::passes

@@ -57,6 +57,7 @@ struct Outputs
   bool com = false;                   ///< centre of mass (world)
   bool momentum = false;              ///< centroidal momentum [angular about CoM; linear]
   bool energy = false;                ///< kinetic + potential energy
+  bool derivatives = false;           ///< inverse/forward dynamics derivatives (no contacts yet)
 };
 
 /// Simple controller used by `rbdgen simulate` (the generated step() takes tau from the caller).

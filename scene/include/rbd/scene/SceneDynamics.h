@@ -72,6 +72,23 @@ public:
   /// b + D alpha + f_c - J_c^T F_c - J_w^T W.
   VectorX generalizedBias(const VectorX & q, const VectorX & alpha, const Wrenches & wrenches = {}) const;
 
+  /// Derivatives of inverseDynamics (tangent convention of rbd/IDDerivatives.h; wrenches held
+  /// constant), nv x nv each. Throws std::logic_error for a scene with contacts (not provided).
+  struct IdDerivatives
+  {
+    MatrixX dtauDq, dtauDalpha;
+  };
+  IdDerivatives inverseDynamicsDerivatives(const VectorX & q, const VectorX & alpha, const VectorX & alphaD,
+                                           const Wrenches & wrenches = {}) const;
+  /// forwardDynamics and its derivatives: d alphaD = -(H + A)^-1 d ID at alphaD, d alphaD/d tau = (H + A)^-1.
+  struct FdDerivatives
+  {
+    VectorX alphaD;
+    MatrixX dalphaDDq, dalphaDDalpha, Minv;
+  };
+  FdDerivatives forwardDynamicsDerivatives(const VectorX & q, const VectorX & alpha, const VectorX & tau,
+                                           const Wrenches & wrenches = {}) const;
+
   /// World position / velocity of each contact point (scene order).
   std::vector<Vector3> contactPositions(const VectorX & q) const;
   std::vector<Vector3> contactVelocities(const VectorX & q, const VectorX & alpha) const;

@@ -137,7 +137,7 @@ std::vector<typename SceneDynamicsTpl<T>::Vector3> SceneDynamicsTpl<T>::contactF
 
 template<class T>
 std::vector<sva::ForceVec<T>> SceneDynamicsTpl<T>::bodyForces(const MultiBodyConfigTpl<T> & mbc,
-                                                                const Wrenches & wrenches) const
+                                                                const Wrenches & wrenches, bool contacts) const
 {
   std::vector<sva::ForceVec<T>> force(static_cast<std::size_t>(mb_.nrBodies()), sva::ForceVec<T>::Zero());
   if(!wrenches.empty())
@@ -145,7 +145,7 @@ std::vector<sva::ForceVec<T>> SceneDynamicsTpl<T>::bodyForces(const MultiBodyCon
     checkSize(static_cast<Eigen::Index>(wrenches.size()), static_cast<int>(wrenchBodies_.size()), "wrenches");
     for(std::size_t w = 0; w < wrenches.size(); ++w) force[static_cast<std::size_t>(wrenchBodies_[w])] += wrenches[w];
   }
-  if(contactPointsB_.empty()) return force;
+  if(!contacts || contactPointsB_.empty()) return force;
   const std::vector<Vector3> p = contactPositions(mbc), f = contactForces(mbc);
   // force f at world point p: wrench [p x f; f] at the world origin
   for(std::size_t c = 0; c < p.size(); ++c)
@@ -241,14 +241,12 @@ typename SceneDynamicsTpl<T>::IdDerivatives SceneDynamicsTpl<T>::inverseDynamics
     const VectorX & q, const VectorX & alpha, const VectorX & alphaD, const Wrenches & wrenches) const
 {
   using std::sqrt;
-  if(!scene_.contacts.empty())
-    throw std::logic_error(scene_.file + ": derivatives of a scene with contacts are not provided");
   checkSize(alphaD.size(), nv(), "alphaD");
-  // rigid-body part: RNEA with the scene's gravity and wrenches; alpha = 0 inside it without
-  // velocity terms (then d/dalpha of that part is zero)
+  // rigid-body part: RNEA with the scene's gravity and the caller's wrenches (held constant); alpha = 0
+  // inside it without velocity terms (then d/dalpha of that part is zero)
   MultiBodyConfigTpl<T> mbc = kinematics(q, scene_.velocityTerms ? alpha : VectorX::Zero(nv()));
   mbc.gravity = -gravityW_;
-  mbc.force = bodyForces(mbc, wrenches);
+  mbc.force = bodyForces(mbc, wrenches, false);
   vectorToDof<T>(alphaD, mbc.alphaD);
   InverseDynamicsDerivativesTpl<T> d(mb_);
   d.inverseDynamicsDerivatives(mb_, mbc);
@@ -260,7 +258,72 @@ typename SceneDynamicsTpl<T>::IdDerivatives SceneDynamicsTpl<T>::inverseDynamics
     const T r = alpha[i] * alpha[i] + vs2;
     out.dtauDalpha(i, i) += damping_[i] + friction_[i] * vs2 / (r * sqrt(r));
   }
+  // - J_c^T F_c(q, alpha): the contacts always see the true velocities
+  if(!contactPointsB_.empty()) subtractContactDerivatives(kinematics(q, alpha), alpha, out);
   return out;
+}
+
+template<class T>
+void SceneDynamicsTpl<T>::subtractContactDerivatives(const MultiBodyConfigTpl<T> & mbc, const VectorX & alpha,
+                                                     IdDerivatives & out) const
+{
+  using std::sqrt;
+  // tau_j -= u_j . f with u_j = v_j + w_j x p the point-velocity column of dof j (world) and f(p, pdot)
+  // the contact force. A tangent step of dof k turns the axes of the joints at and after k's joint on
+  // the path (j after k) and moves p by u_k:
+  //   du_j/dq_k = w_k x u_j (j after k),  w_j x u_k (j before k);   dp/dq_k = u_k
+  //   dpdot/dq_k = w_k x V_k + W_k x u_k,  V_k = sum_{j after k} alpha_j u_j,  W_k = sum_{j before k} alpha_j w_j
+  //   dtau_j/dq_k -= du_j/dq_k . f + u_j . (F_p u_k + F_v dpdot/dq_k),  dtau_j/dalpha_k -= u_j . F_v u_k
+  // F_p = df/dp, F_v = df/dpdot of the model of contactForces (zero where the point is not pushed).
+  const ContactModel & m = scene_.contactModel;
+  const T k = T(m.stiffness), c = T(m.damping), mu = T(m.mu), vs = T(m.slipVelocity);
+  const std::vector<Vector3> f = contactForces(mbc), pd = contactVelocities(mbc);
+  for(std::size_t ic = 0; ic < f.size(); ++ic)
+  {
+    if(!(f[ic].z() > T(0))) continue; // not pushed: F = 0 around this state
+    const Vector3 & v = pd[ic];
+    const T r = sqrt(v.x() * v.x() + v.y() * v.y() + vs * vs), fn = f[ic].z();
+    // fn = k (z0 - p_z) - c pdot_z;  ft = -mu fn vt / r,  r = sqrt(|vt|^2 + vs^2)
+    Vector3 Fpz(mu * k * v.x() / r, mu * k * v.y() / r, -k); // F_p = [0 0 Fpz]
+    Matrix3 Fv = Matrix3::Zero();
+    Fv.template topLeftCorner<2, 2>() = -mu * fn / r * Eigen::Matrix<T, 2, 2>::Identity() +
+                                        mu * fn / (r * r * r) * v.template head<2>() * v.template head<2>().transpose();
+    Fv.template block<2, 1>(0, 2) = mu * c / r * v.template head<2>();
+    Fv(2, 2) = -c;
+    // the columns of the path: [w_j; u_j] at the point, world axes; dof index and joint position on the path
+    JacobianTpl<T> jac(mb_, mb_.body(contactBodies_[ic]).name(), contactPointsB_[ic]);
+    const MatrixX J = jac.jacobian(mb_, mbc);
+    std::vector<int> dof, pos;
+    for(std::size_t pj = 0; pj < jac.jointsPath().size(); ++pj)
+    {
+      const int j = jac.jointsPath()[pj];
+      for(int d = 0; d < mb_.joint(j).dof(); ++d)
+      {
+        dof.push_back(mb_.jointPosInDof(j) + d);
+        pos.push_back(static_cast<int>(pj));
+      }
+    }
+    const auto n = static_cast<int>(dof.size());
+    auto w = [&](int a) { return Vector3(J.template block<3, 1>(0, a)); };
+    auto u = [&](int a) { return Vector3(J.template block<3, 1>(3, a)); };
+    for(int kk = 0; kk < n; ++kk)
+    {
+      Vector3 V = Vector3::Zero(), W = Vector3::Zero();
+      for(int j = 0; j < n; ++j)
+      {
+        if(pos[j] >= pos[kk]) V += alpha[dof[j]] * u(j);
+        else W += alpha[dof[j]] * w(j);
+      }
+      const Vector3 dpd = w(kk).cross(V) + W.cross(u(kk));
+      const Vector3 df = Fpz * u(kk).z() + Fv * dpd, FvU = Fv * u(kk);
+      for(int j = 0; j < n; ++j)
+      {
+        const T du = pos[j] >= pos[kk] ? w(kk).cross(u(j)).dot(f[ic]) : w(j).cross(u(kk)).dot(f[ic]);
+        out.dtauDq(dof[j], dof[kk]) -= du + u(j).dot(df);
+        out.dtauDalpha(dof[j], dof[kk]) -= u(j).dot(FvU);
+      }
+    }
+  }
 }
 
 template<class T>

@@ -184,9 +184,6 @@ void readOutputs(Context & cx, const XMLElement * e, Scene & s)
     }
     cx.rd.onlyAttributes(c, "", {});
     cx.rd.onlyChildren(c, "", {});
-    if(tag == "derivatives" && !s.contacts.empty())
-      cx.rd.fail(c, "", "derivatives of a scene with <contacts> are not provided yet (the compliant contact "
-                        "forces are not differentiated); remove <contacts> or <derivatives/>");
     bool & flag = tag == "com"           ? s.outputs.com
                   : tag == "momentum"    ? s.outputs.momentum
                   : tag == "derivatives" ? s.outputs.derivatives

@@ -241,10 +241,12 @@ TEST_P(SceneGenerated, Derivatives)
   Log lq{"dtau_dq"}, la{"dtau_dalpha"}, lfq{"dalphaD_dq"}, lfa{"dalphaD_dalpha"}, lmi{"Minv"}, lad{"fd_derivatives alphaD"};
   Eigen::MatrixXd dq(nv, nv), da(nv, nv), fq(nv, nv), fa(nv, nv), mi(nv, nv);
   Vec ad(nv);
+  int pushed = 0; // contact points with a force (their derivatives are not zero)
   for(int k = 0; k < kStates; ++k)
   {
     const State s = randomState(rng, ref, g());
     const auto W = toWrenches(s.w);
+    for(const auto & f : ref.dyn.contactForces(s.q, s.alpha)) pushed += f.z() > 0;
     const auto r = ref.dyn.inverseDynamicsDerivatives(s.q, s.alpha, s.alphaD, W);
     g().inverseDynamicsDerivatives(s.q.data(), s.alpha.data(), s.alphaD.data(), s.w.data(), dq.data(), da.data());
     lq.add(err(dq, r.dtauDq));
@@ -262,6 +264,10 @@ TEST_P(SceneGenerated, Derivatives)
   // -M^-1 dID: two solvers (LLT vs tree-sparse LTDL) differ by ~cond(M) eps times |dID|
   for(const Log * l : {&lfq, &lfa}) EXPECT_LE(l->worst, 100 * kTol) << l->what;
   EXPECT_EQ(lfq.n, g().forwardDynamicsDerivatives ? kStates : 0);
+  if(g().ncontacts > 0)
+  {
+    EXPECT_GT(pushed, kStates / 4) << "too few states with contact forces to test their derivatives";
+  }
 }
 
 TEST_P(SceneGenerated, Outputs)

@@ -1,5 +1,7 @@
 // Derivatives of the dynamics: d tau/dq, d tau/dalpha by the world-frame passes of
 // passes/DynamicsDerivatives.h, and the factors of H that forward_dynamics_derivatives() solves with.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "../passes/DynamicsDerivatives.h"
@@ -15,17 +17,24 @@ using namespace rbdgen::passes;
 namespace
 {
 
+void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std::vector<WorldBody> & w,
+                            const SceneEffects & fx, std::size_t c);
+
 /// d.dtau_dq and d.dtau_dalpha of the rigid-body terms: gravity (or none), velocity terms (or
 /// none), and the world wrenches of the bodies in wrenchBodies read from `wrenches[w]` (held constant).
 void emitRigidBodyDerivatives(Block & b, const RobotModel & rm, const std::optional<Eigen::Vector3d> & gravity,
-                              bool velocityTerms, const std::vector<int> & wrenchBodies)
+                              bool velocityTerms, const std::vector<int> & wrenchBodies, const SceneEffects * contacts)
 {
   PassContext ctx(b, rm);
-  MotionRequest req = MotionRequest::make(true, velocityTerms, true);
+  const bool anyContact = contacts && !contacts->contacts.empty();
+  MotionRequest req = MotionRequest::make(true, velocityTerms || anyContact, true);
   req.velocityProducts = velocityTerms;
   req.gravity = gravity;
   const MotionState m = forwardMotion(ctx, req, ctx.allJoints());
-  const std::vector<WorldBody> w = worldBodies(ctx, m);
+  // the rigid-body terms see alpha = 0 without velocity terms; the contacts see the true velocities
+  MotionState still = m;
+  if(!velocityTerms) std::fill(still.v.begin(), still.v.end(), Motion{Vec3::zero(), Vec3::zero()});
+  const std::vector<WorldBody> w = worldBodies(ctx, still);
   const std::vector<SubtreeSums> c = subtreeSums(ctx, w);
   std::vector<Force> fext;
   if(!wrenchBodies.empty())
@@ -46,6 +55,115 @@ void emitRigidBodyDerivatives(Block & b, const RobotModel & rm, const std::optio
                     if(!dq.isZero()) b.line(fmt::format("d.dtau_dq({}, {}) = {};", r, col, Block::text(dq)));
                     if(!da.isZero()) b.line(fmt::format("d.dtau_dalpha({}, {}) = {};", r, col, Block::text(da)));
                   });
+  if(anyContact)
+    for(std::size_t ic = 0; ic < contacts->contacts.size(); ++ic) emitContactDerivatives(ctx, m, w, *contacts, ic);
+}
+
+/// - d(J_c^T f_c)/dq and /dalpha of contact c (runtime: SceneDynamics.cpp subtractContactDerivatives,
+/// which states the equations): u_j = v_j + w_j x p per dof j on the owner's path (world s_j = [w_j; v_j]),
+///   dtau_j/dq_k -= (j after k ? w_k . (u_j x f) : w_j . (u_k x f)) + u_j . (F_p u_k + F_v dpdot_k)
+///   dpdot_k = w_k x V_k + W_k x u_k,  dtau_j/dalpha_k -= u_j . F_v u_k.
+void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std::vector<WorldBody> & w,
+                            const SceneEffects & fx, std::size_t c)
+{
+  Block & b = ctx.block();
+  const RobotModel & rm = ctx.model();
+  const SceneContact & sc = fx.contacts[c];
+  const int o = rm.bodies[static_cast<std::size_t>(sc.body)].owner;
+  if(o < 0) return; // a point of a static body: no dependence on q or alpha
+  const auto ko = static_cast<std::size_t>(o);
+  const std::string h = fmt::format("dc{}", c);
+  b.comment(fmt::format("contact '{}': d(J_c^T f_c) (F_p = df/dp, F_v = df/dpdot where the point is pushed)", sc.name));
+  Vec3 pos, vel;
+  emitPointMotion(b, m.X0[ko], m.v[ko], contactPointInOwner(rm, sc), pos, vel, h);
+  const Vec3 f = emitContactForce(b, fx, pos, vel, h);
+  // fn = k depth - c pdot_z, ft = -mu fn vt / r: F_p = [0 0 Fpz], F_v below (zero when not pushed)
+  const std::string fn = Block::text(f[2]), on = h + "_on";
+  b.line(fmt::format("const S {} = {} > S(0) ? S(1) : S(0);", on, fn));
+  Vec3 Fpz = Vec3::zero();
+  Mat3 Fv;
+  for(int i = 0; i < 9; ++i) Fv.m[static_cast<std::size_t>(i)] = Scalar::constant(0.0);
+  Fpz[2] = b.def(fmt::format("{} * {}", Block::literal(-fx.stiffness), on), h + "_Fpz");
+  Fv(2, 2) = b.def(fmt::format("{} * {}", Block::literal(-fx.contactDamping), on), h + "_Fv22");
+  if(fx.mu != 0.0)
+  {
+    const std::string r = b.def(fmt::format("std::sqrt({})", Block::text(b.sum({Term{1.0, {vel[0], vel[0]}}, Term{1.0, {vel[1], vel[1]}},
+                                                                          Term{fx.slipVelocity * fx.slipVelocity, {}}}, h + "_r2"))),
+                                h + "_r").name();
+    const std::string vx = Block::text(vel[0]), vy = Block::text(vel[1]);
+    const std::string g = b.def(fmt::format("{} * {} / {}", Block::literal(fx.mu), fn, r), h + "_g").name();        // mu fn / r
+    const std::string g3 = b.def(fmt::format("{} / ({} * {})", g, r, r), h + "_g3").name();                       // mu fn / r^3
+    const std::string kr = b.def(fmt::format("{} * {} / {}", Block::literal(fx.mu * fx.stiffness), on, r), h + "_kr").name(); // mu k / r
+    const std::string cr = b.def(fmt::format("{} * {} / {}", Block::literal(fx.mu * fx.contactDamping), on, r), h + "_cr").name();
+    Fpz[0] = b.def(fmt::format("{} * {}", kr, vx), h + "_Fpx");
+    Fpz[1] = b.def(fmt::format("{} * {}", kr, vy), h + "_Fpy");
+    Fv(0, 0) = b.def(fmt::format("{} * {} * {} - {}", g3, vx, vx, g), h + "_Fv00");
+    Fv(1, 1) = b.def(fmt::format("{} * {} * {} - {}", g3, vy, vy, g), h + "_Fv11");
+    Fv(0, 1) = Fv(1, 0) = b.def(fmt::format("{} * {} * {}", g3, vx, vy), h + "_Fv01");
+    Fv(0, 2) = b.def(fmt::format("{} * {}", cr, vx), h + "_Fv02");
+    Fv(1, 2) = b.def(fmt::format("{} * {}", cr, vy), h + "_Fv12");
+  }
+  // the dofs on the path: world [w_j; u_j] at the point, their joint's position on the path
+  struct Col
+  {
+    int dof, pos;
+    Vec3 w, u;
+  };
+  std::vector<Col> cols;
+  const std::vector<int> path = rm.path(o);
+  for(std::size_t pj = 0; pj < path.size(); ++pj)
+  {
+    const auto j = static_cast<std::size_t>(path[pj]);
+    for(std::size_t d = 0; d < w[j].s.size(); ++d)
+    {
+      const Motion & s = w[j].s[d];
+      const int dof = rm.joints[j].vIndex + static_cast<int>(d);
+      cols.push_back({dof, static_cast<int>(pj), s.w, add(b, s.v, cross(b, s.w, pos, fmt::format("{}_wp{}", h, dof)), fmt::format("{}_u{}", h, dof))});
+    }
+  }
+  // V_J = sum over the dofs at and after joint J of alpha u, W_J = sum before J of alpha w
+  std::vector<Vec3> V(path.size(), Vec3::zero()), W(path.size(), Vec3::zero());
+  for(std::size_t pj = path.size(); pj-- > 0;)
+  {
+    if(pj + 1 < path.size()) V[pj] = V[pj + 1];
+    for(const Col & cl : cols)
+      if(cl.pos == static_cast<int>(pj))
+        V[pj] = add(b, V[pj], scale(b, Scalar::var(fmt::format("alpha[{}]", cl.dof)), cl.u, fmt::format("{}_au{}", h, cl.dof)), fmt::format("{}_V{}", h, pj));
+  }
+  for(std::size_t pj = 1; pj < path.size(); ++pj)
+  {
+    W[pj] = W[pj - 1];
+    for(const Col & cl : cols)
+      if(cl.pos == static_cast<int>(pj) - 1)
+        W[pj] = add(b, W[pj], scale(b, Scalar::var(fmt::format("alpha[{}]", cl.dof)), cl.w, fmt::format("{}_aw{}", h, cl.dof)), fmt::format("{}_W{}", h, pj));
+  }
+  std::vector<Vec3> df, FvU, t;
+  for(const Col & k : cols)
+  {
+    const auto pk = static_cast<std::size_t>(k.pos);
+    const Vec3 dpd = add(b, cross(b, k.w, V[pk], fmt::format("{}_wV{}", h, k.dof)), cross(b, W[pk], k.u, fmt::format("{}_Wu{}", h, k.dof)),
+                         fmt::format("{}_dpd{}", h, k.dof));
+    FvU.push_back(mul(b, Fv, k.u, fmt::format("{}_FvU{}", h, k.dof)));
+    df.push_back(add(b, scale(b, k.u[2], Fpz, fmt::format("{}_Fpu{}", h, k.dof)), mul(b, Fv, dpd, fmt::format("{}_Fvd{}", h, k.dof)),
+                     fmt::format("{}_df{}", h, k.dof)));
+    t.push_back(cross(b, k.u, f, fmt::format("{}_t{}", h, k.dof)));
+  }
+  auto dotTerms = [](std::vector<Term> & terms, const Vec3 & x, const Vec3 & y) {
+    for(int i = 0; i < 3; ++i) terms.push_back(Term{1.0, {x[i], y[i]}});
+  };
+  for(std::size_t jj = 0; jj < cols.size(); ++jj)
+    for(std::size_t kk = 0; kk < cols.size(); ++kk)
+    {
+      const Col & j = cols[jj];
+      const Col & k = cols[kk];
+      std::vector<Term> dq, da;
+      if(j.pos >= k.pos) dotTerms(dq, k.w, t[jj]);
+      else dotTerms(dq, j.w, t[kk]);
+      dotTerms(dq, j.u, df[kk]);
+      dotTerms(da, j.u, FvU[kk]);
+      b.line(fmt::format("d.dtau_dq({}, {}) -= {};", j.dof, k.dof, Block::text(dq)));
+      b.line(fmt::format("d.dtau_dalpha({}, {}) -= {};", j.dof, k.dof, Block::text(da)));
+    }
 }
 
 /// X = H^-1 [-dID/dq, -dID/dalpha, 1] by row operations along the dof tree, into d.
@@ -95,14 +213,14 @@ EmittedBody fdDerivativesBody(const RobotModel & rm, const std::vector<double> &
 EmittedBody inverseDynamicsDerivativesBody(const RobotModel & rm)
 {
   Block b;
-  emitRigidBodyDerivatives(b, rm, Eigen::Vector3d(0, 0, -9.81), true, {});
+  emitRigidBodyDerivatives(b, rm, Eigen::Vector3d(0, 0, -9.81), true, {}, nullptr);
   return finish(b);
 }
 
 EmittedBody sceneInverseDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx)
 {
   Block b;
-  emitRigidBodyDerivatives(b, rm, fx.gravity, fx.velocityTerms, fx.wrenchBodies);
+  emitRigidBodyDerivatives(b, rm, fx.gravity, fx.velocityTerms, fx.wrenchBodies, &fx);
   // joint-space terms: damping alpha, friction alpha / sqrt(alpha^2 + v_s^2) (derivative f v_s^2 / (.)^(3/2))
   for(int i = 0; i < rm.nv; ++i)
   {

@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include "../codegen/Spatial.h"
 #include "Functions.h"
 
 namespace rbdgen::emit
@@ -40,13 +41,23 @@ struct SceneEffects
   bool hasArmature() const { return anyNonZero(armature); }
 };
 
+/// The contact point in its owner's body frame (constant).
+cg::Vec3 contactPointInOwner(const RobotModel & rm, const SceneContact & c);
+/// World force of the compliant contact model at world position p, velocity pd (names from h:
+/// h_depth, h_push, h_fn, h_vt2 when mu != 0).
+cg::Vec3 emitContactForce(cg::Block & b, const SceneEffects & fx, const cg::Vec3 & p, const cg::Vec3 & pd,
+                          const std::string & h);
+/// World position r + E^T p and velocity E^T (v + w x p) of body point p (X0 = (E, r), body velocity v).
+void emitPointMotion(cg::Block & b, const cg::Xform & X0, const cg::Motion & v, const cg::Vec3 & p, cg::Vec3 & pos,
+                     cg::Vec3 & vel, const std::string & h);
+
 /// Scene inverse dynamics (withAlphaD) or the bias of forward dynamics (alphaD = 0): reads q, alpha
 /// [, alphaD] [, wrenches]; fills `tau` with (H + diag(armature)) alphaD + b + damping + friction
 /// - contact and wrench torques.
 EmittedBody sceneRneaBody(const RobotModel & rm, const SceneEffects & fx, bool withAlphaD);
 
 /// Reads q, alpha, alphaD [, wrenches]; fills d.dtau_dq, d.dtau_dalpha (zeroed before) of the scene's
-/// inverse dynamics (wrenches held constant; no contacts: the caller refuses them).
+/// inverse dynamics (wrenches held constant; contact forces differentiated where a point is pushed).
 EmittedBody sceneInverseDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx);
 /// Reads q, alpha, tau [, wrenches]; fills d (FdDerivatives<S>) of the scene's forward dynamics;
 /// biasCall: the generalized_bias call (empty: none), wrenchArg ", wrenches" or "".

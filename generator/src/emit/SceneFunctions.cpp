@@ -20,9 +20,6 @@ bool SceneEffects::anyNonZero(const std::vector<double> & v) const
   return false;
 }
 
-namespace
-{
-
 // The contact point in its owner's body frame (constant): X_owner_link^-1 applied to the point.
 Vec3 contactPointInOwner(const RobotModel & rm, const SceneContact & c)
 {
@@ -60,8 +57,6 @@ void emitPointMotion(Block & b, const Xform & X0, const Motion & v, const Vec3 &
   pos = add(b, X0.r, tmul(b, X0.E, p, h + "_Rp"), h + "_p");
   vel = tmul(b, X0.E, add(b, v.v, cross(b, v.w, p, h + "_wxp"), h + "_vb"), h + "_pd");
 }
-
-} // namespace
 
 EmittedBody sceneRneaBody(const RobotModel & rm, const SceneEffects & fx, bool withAlphaD)
 {

@@ -38,6 +38,7 @@ public:
   using VectorX = Eigen::Matrix<T, Eigen::Dynamic, 1>;
   using MatrixX = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
   using Vector3 = Eigen::Matrix<T, 3, 1>;
+  using Matrix3 = Eigen::Matrix<T, 3, 3>;
   using Wrenches = std::vector<sva::ForceVec<T>>;
 
   SceneDynamicsTpl(const SceneRobot & robot, const Scene & scene);
@@ -73,7 +74,8 @@ public:
   VectorX generalizedBias(const VectorX & q, const VectorX & alpha, const Wrenches & wrenches = {}) const;
 
   /// Derivatives of inverseDynamics (tangent convention of rbd/IDDerivatives.h; wrenches held
-  /// constant), nv x nv each. Throws std::logic_error for a scene with contacts (not provided).
+  /// constant; contact forces differentiated where a point is pushed, F = 0 elsewhere: at the
+  /// contact boundary the one-sided derivative of the side the state is on), nv x nv each.
   struct IdDerivatives
   {
     MatrixX dtauDq, dtauDalpha;
@@ -117,8 +119,11 @@ public:
 private:
   /// RNEA bias with alphaD = 0 on mbc (FK/FV done), gravity of the scene, external forces force.
   VectorX rneaBias(MultiBodyConfigTpl<T> & mbc, const std::vector<sva::ForceVec<T>> & force) const;
-  /// Body forces (world, world origin): contact forces at their points + the caller's wrenches.
-  std::vector<sva::ForceVec<T>> bodyForces(const MultiBodyConfigTpl<T> & mbc, const Wrenches & wrenches) const;
+  /// Body forces (world, world origin): contact forces at their points (if contacts) + the caller's wrenches.
+  std::vector<sva::ForceVec<T>> bodyForces(const MultiBodyConfigTpl<T> & mbc, const Wrenches & wrenches,
+                                           bool contacts = true) const;
+  /// out -= the derivatives of J_c^T F_c (mbc: FK and FV at the true alpha).
+  void subtractContactDerivatives(const MultiBodyConfigTpl<T> & mbc, const VectorX & alpha, IdDerivatives & out) const;
   std::vector<Vector3> contactPositions(const MultiBodyConfigTpl<T> & mbc) const;
   std::vector<Vector3> contactVelocities(const MultiBodyConfigTpl<T> & mbc) const;
   std::vector<Vector3> contactForces(const MultiBodyConfigTpl<T> & mbc) const;

@@ -121,11 +121,11 @@ static void checkBounds(const clitest::Result & result_, const fs::path & out_)
       }
     }
   }
-  // 7 functions x (generated float, generated double, runtime double) + 3 gravity-as-bias rows
-  EXPECT_EQ(staticRows, 7 * 3 + 3);
+  // 9 functions (7 + the two derivatives) x (generated float, generated double, runtime double) + 3 gravity-as-bias rows
+  EXPECT_EQ(staticRows, 9 * 3 + 3);
   EXPECT_EQ(simRows, 3 * 7);
   // Double is at least 1e5 times more accurate than float, generated as runtime (same algorithms).
-  for(const char * f : {"fk", "id", "nle", "gravity", "mass_matrix", "fd_aba", "fd_crba"})
+  for(const char * f : {"fk", "id", "nle", "gravity", "mass_matrix", "fd_aba", "fd_crba", "id_derivatives", "fd_derivatives"})
   {
     SCOPED_TRACE(f);
     const double gf = maxErr.at(std::string("generated float ") + f), gd = maxErr.at(std::string("generated double ") + f),

@@ -72,6 +72,7 @@ std::vector<VariantResult> runGeneratedVariants(const DriverOptions & opt, const
   gen.baseLink = opt.baseLink;
   gen.outDir = dir.string();
   gen.ns = "robot";
+  gen.derivatives = opt.derivatives;
   writeFiles(gen.outDir, generateFiles(gen));
 
   const auto & templates = embeddedTemplates();
@@ -79,7 +80,8 @@ std::vector<VariantResult> runGeneratedVariants(const DriverOptions & opt, const
   if(it == templates.end()) throw std::runtime_error("templates/accuracy_driver.cpp.in is not embedded in rbdgen");
   const std::string robotName = fs::path(opt.urdf).stem().string();
   const std::string driverText =
-      fillTemplate(it->second, {{"robot", robotName}, {"namespace", gen.ns}}, "templates/accuracy_driver.cpp.in");
+      fillTemplate(selectSections(it->second, {{"derivatives", opt.derivatives}}, "templates/accuracy_driver.cpp.in"),
+                   {{"robot", robotName}, {"namespace", gen.ns}}, "templates/accuracy_driver.cpp.in");
   const fs::path source = dir / "accuracy_driver.cpp", exe = dir / "accuracy_driver";
   {
     std::ofstream out(source, std::ios::binary | std::ios::trunc);

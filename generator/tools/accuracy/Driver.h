@@ -19,6 +19,7 @@ struct DriverOptions
   std::string baseLink;
   std::string cxx;           ///< compiler; empty: $CXX, else the compiler rbdgen was built with
   std::string scratchDir;    ///< existing directory for the header, driver, states and outputs
+  bool derivatives = true;   ///< generate and time the derivatives too
 };
 
 /// The compiler used when `requested` is empty: $CXX if set, else the one rbdgen was built with.

@@ -1,14 +1,17 @@
 #include "Reference.h"
 
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 
 #include <Eigen/Eigenvalues>
 
 #include <rbd/FD.h>
+#include <rbd/FDDerivatives.h>
 #include <rbd/FK.h>
 #include <rbd/FV.h>
 #include <rbd/ID.h>
+#include <rbd/IDDerivatives.h>
 
 #include "PoseLayout.h"
 
@@ -20,7 +23,22 @@ Eigen::VectorXd flattenPoses(const rbd::parsers::ParserResult & robot, const std
   return flattenPosesT<double>(robot, bodyPosW);
 }
 
-Reference computeReference(const rbd::parsers::ParserResult & robot, const std::vector<State> & states)
+/// Matrices side by side, column-major, rounded to double.
+static Eigen::VectorXd flattenBlocks(std::initializer_list<const Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic> *> blocks)
+{
+  Eigen::Index n = 0;
+  for(const auto * m : blocks) n += m->size();
+  Eigen::VectorXd v(n);
+  n = 0;
+  for(const auto * m : blocks)
+  {
+    v.segment(n, m->size()) = Eigen::Map<const Eigen::Matrix<long double, Eigen::Dynamic, 1>>(m->data(), m->size()).cast<double>();
+    n += m->size();
+  }
+  return v;
+}
+
+Reference computeReference(const rbd::parsers::ParserResult & robot, const std::vector<State> & states, bool derivatives)
 {
   using LD = long double;
   using VecL = Eigen::Matrix<LD, Eigen::Dynamic, 1>;
@@ -29,6 +47,8 @@ Reference computeReference(const rbd::parsers::ParserResult & robot, const std::
   rbd::MultiBodyConfigTpl<LD> mbc(mb);
   rbd::InverseDynamicsTpl<LD> id(mb);
   rbd::ForwardDynamicsTpl<LD> fd(mb);
+  rbd::InverseDynamicsDerivativesTpl<LD> idd(mb);
+  rbd::ForwardDynamicsDerivativesTpl<LD> fdd(mb);
   const int nv = mb.nrDof();
   Reference ref;
   for(const auto & f : {"fk", "id", "nle", "gravity", "mass_matrix", "fd_aba", "fd_crba"}) ref.outputs[f].reserve(states.size());
@@ -45,8 +65,18 @@ Reference computeReference(const rbd::parsers::ParserResult & robot, const std::
     // tau = ID(q, alpha, alphaD)
     id.inverseDynamics(mb, mbc);
     ref.outputs["id"].push_back(toDouble(rbd::dofToVector(mb, mbc.jointTorque)));
+    if(derivatives)
+    {
+      idd.inverseDynamicsDerivatives(mb, mbc);
+      ref.outputs["id_derivatives"].push_back(flattenBlocks({&idd.dtauDq(), &idd.dtauDalpha()}));
+    }
     // C(q, alpha) = ID(q, alpha, 0); H(q) by CRBA; alphaD = H^-1 (tau - C) by LLT, all in long double
     rbd::vectorToDof<LD>(tau, mbc.jointTorque);
+    if(derivatives)
+    {
+      fdd.forwardDynamicsDerivatives(mb, mbc);
+      ref.outputs["fd_derivatives"].push_back(flattenBlocks({&fdd.dalphaDDq(), &fdd.dalphaDDalpha(), &fdd.Minv()}));
+    }
     fd.forwardDynamics(mb, mbc);
     ref.outputs["nle"].push_back(toDouble(fd.C()));
     const MatL H = fd.H();

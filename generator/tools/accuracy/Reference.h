@@ -19,7 +19,10 @@ struct Reference
   std::vector<double> condH; ///< condition number of H per state (eigenvalues in long double; inf if singular)
 };
 
-Reference computeReference(const rbd::parsers::ParserResult & robot, const std::vector<State> & states);
+/// derivatives: also id_derivatives [dtau/dq, dtau/dalpha] and fd_derivatives [dalphaD/dq, dalphaD/dalpha, Minv]
+/// (column-major blocks side by side, rbd/IDDerivatives.h and FDDerivatives.h in long double).
+Reference computeReference(const rbd::parsers::ParserResult & robot, const std::vector<State> & states,
+                           bool derivatives = false);
 
 /// World-to-link transforms of the MultiBody bodies in the URDF link frames (fk layout, see Variants.h).
 Eigen::VectorXd flattenPoses(const rbd::parsers::ParserResult & robot, const std::vector<sva::PTransformd> & bodyPosW);

@@ -42,7 +42,8 @@ std::string plotLabel(const StaticRow & r)
 const std::vector<std::string> & groupOrder()
 {
   static const std::vector<std::string> g = {"forward kinematics", "inverse dynamics", "bias forces",
-                                             "gravity torques", "mass matrix", "forward dynamics"};
+                                             "gravity torques", "mass matrix", "forward dynamics",
+                                             "inverse dynamics derivatives", "forward dynamics derivatives"};
   return g;
 }
 
@@ -68,7 +69,8 @@ std::string markdown(const StudyResults & r)
        i.compiler +
        "`; runtime: rbdgen's own build, time per call includes setting the configuration, forward kinematics "
        "and forward velocity. Bound: the stated bound on the max error (1e4 eps, forward dynamics "
-       "1e4 eps max(1, cond(H)/1e3)); `*` marks the Pareto front (time, max error) of each group.\n\n";
+       "1e4 eps max(1, cond(H)/1e3), its derivatives the square of that factor); derivatives: [dtau/dq dtau/dalpha] and "
+       "[dalphaD/dq dalphaD/dalpha Minv] side by side, q in the tangent space; `*` marks the Pareto front (time, max error) of each group.\n\n";
   for(const std::string & g : groupOrder())
   {
     const auto rows = rowsOf(r, g);

@@ -1,12 +1,15 @@
 #include "RuntimeVariants.h"
 
 #include <functional>
+#include <initializer_list>
 
 #include <rbd/ABA.h>
 #include <rbd/FD.h>
+#include <rbd/FDDerivatives.h>
 #include <rbd/FK.h>
 #include <rbd/FV.h>
 #include <rbd/ID.h>
+#include <rbd/IDDerivatives.h>
 
 #include "PoseLayout.h"
 #include "Timing.h"
@@ -14,13 +17,28 @@
 namespace rbdgen::accuracy
 {
 
-std::vector<VariantResult> runRuntimeVariants(const rbd::parsers::ParserResult & robot, const std::vector<State> & states)
+std::vector<VariantResult> runRuntimeVariants(const rbd::parsers::ParserResult & robot, const std::vector<State> & states,
+                                              bool derivatives)
 {
   const rbd::MultiBody & mb = robot.mb;
   rbd::MultiBodyConfig mbc(mb);
   rbd::InverseDynamics id(mb);
   rbd::ForwardDynamics fd(mb);
   rbd::ForwardDynamicsABA aba(mb);
+  rbd::InverseDynamicsDerivatives idd(mb);
+  rbd::ForwardDynamicsDerivatives fdd(mb);
+  const auto flat = [](std::initializer_list<const Eigen::MatrixXd *> blocks) {
+    Eigen::Index n = 0;
+    for(const auto * m : blocks) n += m->size();
+    Eigen::VectorXd v(n);
+    n = 0;
+    for(const auto * m : blocks)
+    {
+      v.segment(n, m->size()) = Eigen::Map<const Eigen::VectorXd>(m->data(), m->size());
+      n += m->size();
+    }
+    return v;
+  };
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(mb.nrDof());
   // q, alpha (and alphaD, tau) of state i into mbc, then FK and FV.
   const auto set = [&](const State & s, const Eigen::VectorXd & alpha) {
@@ -38,7 +56,7 @@ std::vector<VariantResult> runRuntimeVariants(const rbd::parsers::ParserResult &
     std::function<void(const State &)> run;
     std::function<Eigen::VectorXd()> output;
   };
-  const std::vector<Fn> fns = {
+  std::vector<Fn> fns = {
       {"fk",
        [&](const State & s) {
          rbd::vectorToParam<double>(s.q, mbc.q);
@@ -90,6 +108,23 @@ std::vector<VariantResult> runRuntimeVariants(const rbd::parsers::ParserResult &
        },
        [&] { return rbd::dofToVector(mb, mbc.alphaD); }},
   };
+  if(derivatives)
+  {
+    fns.push_back({"id_derivatives",
+                   [&](const State & s) {
+                     set(s, s.alpha);
+                     idd.inverseDynamicsDerivatives(mb, mbc);
+                     keepAlive(idd.dtauDq());
+                   },
+                   [&] { return flat({&idd.dtauDq(), &idd.dtauDalpha()}); }});
+    fns.push_back({"fd_derivatives",
+                   [&](const State & s) {
+                     set(s, s.alpha);
+                     fdd.forwardDynamicsDerivatives(mb, mbc);
+                     keepAlive(fdd.dalphaDDq());
+                   },
+                   [&] { return flat({&fdd.dalphaDDq(), &fdd.dalphaDDalpha(), &fdd.Minv()}); }});
+  }
   std::vector<VariantResult> results;
   const int n = static_cast<int>(states.size());
   for(const Fn & fn : fns)

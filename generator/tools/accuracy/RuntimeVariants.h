@@ -12,6 +12,7 @@
 namespace rbdgen::accuracy
 {
 
-std::vector<VariantResult> runRuntimeVariants(const rbd::parsers::ParserResult & robot, const std::vector<State> & states);
+std::vector<VariantResult> runRuntimeVariants(const rbd::parsers::ParserResult & robot, const std::vector<State> & states,
+                                              bool derivatives = false);
 
 } // namespace rbdgen::accuracy

@@ -5,6 +5,8 @@
 // Stated bounds on the max error (eps: 2^-23 float, 2^-52 double):
 //   fk, id, nle, gravity, mass_matrix:  1e4 eps              (double 2.2e-12, float 1.2e-3)
 //   fd_aba, fd_crba:                    1e4 eps max(1, cond(H)/1e3), cond(H) the largest over the states
+//   id_derivatives [dtau/dq dtau/dalpha]: 1e4 eps
+//   fd_derivatives [dalphaD/dq dalphaD/dalpha Minv]: 1e4 eps max(1, cond(H)/1e3)^2
 //     (both solvers are only good to about cond(H) eps)
 //   "gravity without velocity terms" (gravity_torques against ID(q, alpha, 0)) is a modelling error,
 //     not a rounding error: no bound (it is what dropping the velocity terms costs at those speeds).

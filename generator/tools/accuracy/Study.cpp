@@ -112,7 +112,7 @@ std::vector<std::string> runStudy(const StudyOptions & opt)
 
   const std::vector<State> states = randomStates(robot.mb, opt.states, opt.seed);
   progress("long double reference");
-  const Reference ref = computeReference(robot, states);
+  const Reference ref = computeReference(robot, states, opt.derivatives);
   std::vector<double> cond = ref.condH;
   std::sort(cond.begin(), cond.end());
   res.info.condHMedian = cond[cond.size() / 2];
@@ -125,10 +125,11 @@ std::vector<std::string> runStudy(const StudyOptions & opt)
   dopt.floatingBase = scene.floatingBase;
   dopt.baseLink = scene.baseLink;
   dopt.cxx = opt.cxx;
+  dopt.derivatives = opt.derivatives;
   dopt.scratchDir = scratch.path().string();
   std::vector<VariantResult> variants = runGeneratedVariants(dopt, states, nq, nv);
   progress("timing the runtime");
-  for(VariantResult & v : runRuntimeVariants(robot, states)) variants.push_back(std::move(v));
+  for(VariantResult & v : runRuntimeVariants(robot, states, opt.derivatives)) variants.push_back(std::move(v));
   res.staticRows = evaluateStatic(variants, ref);
 
   if(opt.simulation)

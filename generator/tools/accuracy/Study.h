@@ -22,6 +22,7 @@ struct StudyOptions
   std::string cxx;            ///< driver compiler (empty: $CXX, else rbdgen's)
   bool simulation = true;     ///< run the integrator study
   bool plots = true;          ///< run gnuplot
+  bool derivatives = true;    ///< also study inverse / forward dynamics derivatives
   SimulationOptions sim;
 };
 

@@ -31,6 +31,8 @@ Command addAccuracyCommand(CLI::App & app)
   cmd->add_option("--horizon", o->study.sim.horizon, "simulated time of the integrator study, s (default 1)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("!--no-simulation", o->study.simulation, "skip the integrator study");
+  cmd->add_flag("!--no-derivatives", o->study.derivatives,
+                "skip the derivatives (the generated header is then compiled without them)");
   cmd->add_flag("!--no-plots", o->study.plots, "do not run gnuplot (the .dat and .gp files are still written)");
   return {cmd,
           [o] {

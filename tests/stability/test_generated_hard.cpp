@@ -11,10 +11,17 @@
 //     times the constant of the spatial products; measured well below, see the printed worst);
 //   forward dynamics (ABA and CRBA + LTDL): 20 nv cond(H) u, normwise (see stab::Bounds),
 //     checked where that bound is below 1 (else the problem has no correct digit in that scalar,
-//     and only finiteness is required).
+//     and only finiteness is required);
+//   derivatives (generated with DERIVATIVES) against rbd/IDDerivatives.h and FDDerivatives.h in long
+//     double: d tau/dq, d tau/dalpha like inverse dynamics, 100 n u times max(1, |alpha|^2) (the
+//     centrifugal terms are quadratic in alpha: their derivatives carry the rounding of alpha^2);
+//     d alphaD/dq, d alphaD/dalpha, Minv: 20 nv cond(H)^2 u (H^-1 applied to a quantity that
+//     already carries alphaD's error), checked where below 1.
 // Every output must be finite.
 #include <cstdio>
 
+#include <rbd/FDDerivatives.h>
+#include <rbd/IDDerivatives.h>
 #include <rbd/parsers/urdf.h>
 
 #include "GeneratedRobot.h"
@@ -83,7 +90,7 @@ stab::Outputs<S> generated(const rbdgentest::GeneratedFunctions<S> & g, const Ge
 /// Worst errors of one scalar over the states of a regime.
 struct Worst
 {
-  double kin = 0, fd = 0, fdOverBound = 0;
+  double kin = 0, fd = 0, fdOverBound = 0, did = 0, dfd = 0;
   double cond = 0;
   int fdSkipped = 0;
 };
@@ -164,6 +171,40 @@ protected:
     else ++w.fdSkipped;
     w.kin = std::max(w.kin, kin);
     w.cond = std::max(w.cond, cond);
+    checkDerivatives(gen, ref, q, alpha, alphaD, tau, cond, w);
+  }
+
+  /// Generated derivatives against the long double runtime (ref: the reference's inputs).
+  template<typename S>
+  void checkDerivatives(const rbdgentest::GeneratedFunctions<S> & gen, rbd::MultiBodyConfigTpl<LD> ref, const VecX<S> & q,
+                        const VecX<S> & alpha, const VecX<S> & alphaD, const VecX<S> & tau, double cond, Worst & w)
+  {
+    ASSERT_NE(gen.inverseDynamicsDerivatives, nullptr);
+    const int nv = g().nv;
+    const double u = std::numeric_limits<S>::epsilon() / 2;
+    dyntest::kinematics(mbL_, ref);
+    rbd::InverseDynamicsDerivativesTpl<LD> idL(mbL_);
+    idL.inverseDynamicsDerivatives(mbL_, ref);
+    rbd::ForwardDynamicsDerivativesTpl<LD> fdL(mbL_);
+    fdL.forwardDynamicsDerivatives(mbL_, ref);
+    MatX<S> dq(nv, nv), da(nv, nv), fq(nv, nv), fa(nv, nv), mi(nv, nv);
+    VecX<S> ad(nv);
+    gen.inverseDynamicsDerivatives(q.data(), alpha.data(), alphaD.data(), dq.data(), da.data());
+    gen.forwardDynamicsDerivatives(q.data(), alpha.data(), tau.data(), ad.data(), fq.data(), fa.data(), mi.data());
+    ASSERT_TRUE(dq.allFinite() && da.allFinite() && fq.allFinite() && fa.allFinite() && mi.allFinite())
+        << "NaN or Inf in the generated derivatives";
+    const double speed = std::max(1.0, static_cast<double>(alpha.template cast<double>().squaredNorm()));
+    const double did = std::max(rbdtest::relErr(dq, idL.dtauDq()), rbdtest::relErr(da, idL.dtauDalpha()));
+    EXPECT_LE(did, 100 * g().nbodies * u * speed) << "d tau";
+    w.did = std::max(w.did, did / speed);
+    const double bound = 20.0 * nv * cond * cond * u;
+    if(bound < 1)
+    {
+      const double dfd = std::max({rbdtest::relErr(fq, fdL.dalphaDDq()), rbdtest::relErr(fa, fdL.dalphaDDalpha()),
+                                   rbdtest::relErr(mi, fdL.Minv())});
+      EXPECT_LE(dfd, bound) << "d alphaD, cond(H) = " << cond;
+      w.dfd = std::max(w.dfd, dfd / bound);
+    }
   }
 
   rbd::parsers::ParserResult robot_;
@@ -193,6 +234,9 @@ TEST_P(GeneratedHard, DoubleAndFloatAgainstLongDoubleRuntime)
                 "%d/%d beyond float); max cond(H) %.2g\n",
                 g().name, regimeName(regime), wd.kin, wd.fd, wd.fdOverBound, wf.kin, wf.fd, wf.fdOverBound, wf.fdSkipped,
                 states, wd.cond);
+    std::printf("[ %-26s %-18s ] derivatives: d tau / max(1, |alpha|^2) double %.2g, float %.2g; d alphaD (of bound) "
+                "double %.2g, float %.2g\n",
+                g().name, regimeName(regime), wd.did, wf.did, wd.dfd, wf.dfd);
   }
 }
 

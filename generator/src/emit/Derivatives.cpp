@@ -17,7 +17,7 @@ using namespace rbdgen::passes;
 namespace
 {
 
-void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std::vector<WorldBody> & w,
+void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std::vector<WorldBody> & w, const Vec3 & r0,
                             const SceneEffects & fx, std::size_t c);
 
 /// d.dtau_dq and d.dtau_dalpha of the rigid-body terms: gravity (or none), velocity terms (or
@@ -34,20 +34,28 @@ void emitRigidBodyDerivatives(Block & b, const RobotModel & rm, const std::optio
   // the rigid-body terms see alpha = 0 without velocity terms; the contacts see the true velocities
   MotionState still = m;
   if(!velocityTerms) std::fill(still.v.begin(), still.v.end(), Motion{Vec3::zero(), Vec3::zero()});
+  // Origin of the passes: world axes at the first root joint's body origin r0 (a floating base 1e4 m
+  // from the world origin, or an arm mounted 1 km away, would cost ~|r0| u in the moments otherwise);
+  // d tau does not depend on the origin. a_0 = [0; -g] is the same at every point.
+  const Vec3 r0 = !rm.joints.empty() && rm.joints.front().parent < 0 ? m.X0.front().r : Vec3::zero();
+  const bool shifted = !(r0[0].isZero() && r0[1].isZero() && r0[2].isZero());
+  if(shifted)
+    for(std::size_t k = 0; k < rm.joints.size(); ++k) still.X0[k].r = sub(b, m.X0[k].r, r0, rm.joints[k].tag + "_r0");
   const std::vector<WorldBody> w = worldBodies(ctx, still);
   const std::vector<SubtreeSums> c = subtreeSums(ctx, w);
   std::vector<Force> fext;
   if(!wrenchBodies.empty())
   {
-    b.comment("wrench sums over each subtree (world coordinates at the world origin)");
+    b.comment("wrench sums over each subtree (world axes at the origin of the passes: n - r0 x f)");
     fext.assign(rm.joints.size(), Force::zero());
     for(std::size_t k = 0; k < wrenchBodies.size(); ++k)
     {
       const int o = rm.bodies[static_cast<std::size_t>(wrenchBodies[k])].owner;
       const std::string slot = fmt::format("wrenches[{}]", k);
+      Force wk{vec3Var(slot, 0), vec3Var(slot, 3)};
+      if(shifted) wk.n = sub(b, wk.n, cross(b, r0, wk.f, fmt::format("w{}_r0xf", k)), fmt::format("w{}_n0", k));
       for(int a = o; a >= 0; a = rm.joints[static_cast<std::size_t>(a)].parent)
-        fext[static_cast<std::size_t>(a)] = cg::add(b, fext[static_cast<std::size_t>(a)], Force{vec3Var(slot, 0), vec3Var(slot, 3)},
-                                                    rm.joints[static_cast<std::size_t>(a)].tag + "_Fe");
+        fext[static_cast<std::size_t>(a)] = cg::add(b, fext[static_cast<std::size_t>(a)], wk, rm.joints[static_cast<std::size_t>(a)].tag + "_Fe");
     }
   }
   derivativePairs(ctx, w, c, gravity.value_or(Eigen::Vector3d::Zero()), fext,
@@ -56,14 +64,14 @@ void emitRigidBodyDerivatives(Block & b, const RobotModel & rm, const std::optio
                     if(!da.isZero()) b.line(fmt::format("d.dtau_dalpha({}, {}) = {};", r, col, Block::text(da)));
                   });
   if(anyContact)
-    for(std::size_t ic = 0; ic < contacts->contacts.size(); ++ic) emitContactDerivatives(ctx, m, w, *contacts, ic);
+    for(std::size_t ic = 0; ic < contacts->contacts.size(); ++ic) emitContactDerivatives(ctx, m, w, r0, *contacts, ic);
 }
 
 /// - d(J_c^T f_c)/dq and /dalpha of contact c (runtime: SceneDynamics.cpp subtractContactDerivatives,
 /// which states the equations): u_j = v_j + w_j x p per dof j on the owner's path (world s_j = [w_j; v_j]),
 ///   dtau_j/dq_k -= (j after k ? w_k . (u_j x f) : w_j . (u_k x f)) + u_j . (F_p u_k + F_v dpdot_k)
 ///   dpdot_k = w_k x V_k + W_k x u_k,  dtau_j/dalpha_k -= u_j . F_v u_k.
-void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std::vector<WorldBody> & w,
+void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std::vector<WorldBody> & w, const Vec3 & r0,
                             const SceneEffects & fx, std::size_t c)
 {
   Block & b = ctx.block();
@@ -77,6 +85,7 @@ void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std:
   Vec3 pos, vel;
   emitPointMotion(b, m.X0[ko], m.v[ko], contactPointInOwner(rm, sc), pos, vel, h);
   const Vec3 f = emitContactForce(b, fx, pos, vel, h);
+  const Vec3 p0 = sub(b, pos, r0, h + "_p0"); // the point from the origin of the passes
   // fn = k depth - c pdot_z, ft = -mu fn vt / r: F_p = [0 0 Fpz], F_v below (zero when not pushed)
   const std::string fn = Block::text(f[2]), on = h + "_on";
   b.line(fmt::format("const S {} = {} > S(0) ? S(1) : S(0);", on, fn));
@@ -118,7 +127,7 @@ void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std:
     {
       const Motion & s = w[j].s[d];
       const int dof = rm.joints[j].vIndex + static_cast<int>(d);
-      cols.push_back({dof, static_cast<int>(pj), s.w, add(b, s.v, cross(b, s.w, pos, fmt::format("{}_wp{}", h, dof)), fmt::format("{}_u{}", h, dof))});
+      cols.push_back({dof, static_cast<int>(pj), s.w, add(b, s.v, cross(b, s.w, p0, fmt::format("{}_wp{}", h, dof)), fmt::format("{}_u{}", h, dof))});
     }
   }
   // V_J = sum over the dofs at and after joint J of alpha u, W_J = sum before J of alpha w

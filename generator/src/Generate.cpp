@@ -202,6 +202,7 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   if(derivatives && fd) v["fn_forward_dynamics_derivatives"] = emit::forwardDynamicsDerivativesBody(rm).text;
   v["shared_passes"] = shared.definitions();
   v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
+  if(derivatives) v["detail_opaque"] = templateText("detail_opaque.hpp.in"); // detail::opaque (derivatives)
   const std::string text = selectSections(templateText("dynamics.hpp.in"),
                                           {{"forward_dynamics", fd}, {"no_forward_dynamics", !fd}, {"derivatives", derivatives}},
                                           "templates/dynamics.hpp.in");

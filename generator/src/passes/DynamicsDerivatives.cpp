@@ -1,5 +1,8 @@
 #include "DynamicsDerivatives.h"
 
+#include <algorithm>
+#include <array>
+
 #include <fmt/format.h>
 
 #include "BackwardForce.h"
@@ -121,22 +124,96 @@ std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<WorldB
   return c;
 }
 
+/// From this many dofs on, the pairs' long-lived inputs go through arrays (detail::opaque): g++ -O2
+/// on talos_reduced (38 dofs): 85 s -> 44 s for inverse_dynamics_derivatives, ~9 % slower at run
+/// time; below it the registers win (ur5e: 650 ns in registers, 1,350 ns through the arrays).
+constexpr int kStashDofs = 24;
+
+/// Stores the non-constant scalars in array[k][0..] and replaces them by those slots.
+void stashScalars(Block & b, const std::string & array, int k, const std::vector<Scalar *> & e)
+{
+  for(std::size_t i = 0; i < e.size(); ++i)
+  {
+    if(e[i]->isConst()) continue;
+    const std::string slot = fmt::format("{}[{}][{}]", array, k, i);
+    b.line(fmt::format("{} = {};", slot, Block::text(*e[i])));
+    *e[i] = Scalar::var(slot);
+  }
+}
+
+/// The world quantities of every joint the pairs read (v, a, composite sums), kept in an array.
+struct PairJoint
+{
+  Motion v, a;
+  SubtreeSums c;
+};
+
+std::vector<PairJoint> stashJoints(Block & b, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c, bool stash)
+{
+  std::vector<PairJoint> out(w.size());
+  for(std::size_t k = 0; k < w.size(); ++k) out[k] = PairJoint{w[k].v, w[k].a, c[k]};
+  if(!stash) return out;
+  b.line(fmt::format("S pair_j[{}][43];", std::max<std::size_t>(w.size(), 1)));
+  for(std::size_t k = 0; k < w.size(); ++k)
+  {
+    PairJoint & p = out[k];
+    std::vector<Scalar *> e;
+    for(Vec3 * x : {&p.v.w, &p.v.v, &p.a.w, &p.a.v, &p.c.Ic.h, &p.c.Idc.hd, &p.c.Hc.n, &p.c.Hc.f, &p.c.Gc.n, &p.c.Gc.f})
+      for(int i = 0; i < 3; ++i) e.push_back(&(*x)[i]);
+    e.push_back(&p.c.Ic.m);
+    // symmetric 3x3: the upper triangle, the lower one mirrors it
+    for(Mat3 * M : {&p.c.Ic.I, &p.c.Idc.J})
+      for(int r = 0; r < 3; ++r)
+        for(int col = r; col < 3; ++col) e.push_back(&(*M)(r, col));
+    stashScalars(b, "pair_j", static_cast<int>(k), e);
+    for(Mat3 * M : {&p.c.Ic.I, &p.c.Idc.J})
+      for(int r = 0; r < 3; ++r)
+        for(int col = 0; col < r; ++col) (*M)(r, col) = (*M)(col, r);
+  }
+  b.line("detail::opaque(pair_j);");
+  return out;
+}
+
 void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
                      const Eigen::Vector3d & gravity, const std::vector<Force> & fextSums, const std::function<void(int, int, const Scalar &, const Scalar &)> & onEntry)
 {
   Block & b = ctx.block();
   const RobotModel & rm = ctx.model();
   const std::size_t n = rm.joints.size();
-  // u_k = Ic_i s_k, b_k = dIc_i s_k - s_k x* Hc_i for every dof k (of joint i)
+  // u_k = Ic_i s_k, b_k = dIc_i s_k - s_k x* Hc_i for every dof k (of joint i), kept with s_k in
+  // arrays (detail::opaque): they live through all the pairs below
   std::vector<std::vector<Force>> u(n), bk(n);
+  std::vector<std::vector<Motion>> s(n);
+  const bool stashOn = rm.nv >= kStashDofs;
+  if(stashOn) b.line(fmt::format("S pair_u[{0}][6], pair_b[{0}][6], pair_s[{0}][6];", rm.nv));
+  auto stash = [&](const std::string & array, int k, const Vec3 & x, const Vec3 & y) {
+    std::array<Vec3, 2> out{x, y};
+    if(!stashOn) return out;
+    std::vector<Scalar *> e;
+    for(int i = 0; i < 6; ++i) e.push_back(&out[static_cast<std::size_t>(i / 3)][i % 3]);
+    stashScalars(b, array, k, e);
+    return out;
+  };
   for(std::size_t i = 0; i < n; ++i)
     for(std::size_t d = 0; d < w[i].s.size(); ++d)
     {
       const std::string h = fmt::format("{}_{}", rm.joints[i].tag, d);
-      u[i].push_back(cg::apply(b, c[i].Ic, w[i].s[d], h + "u"));
-      bk[i].push_back(sub(b, apply(b, c[i].Idc, w[i].s[d], h + "Ids"), crossDual(b, w[i].s[d], c[i].Hc, h + "sxH"),
-                          h + "b"));
+      const int k = rm.joints[i].vIndex + static_cast<int>(d);
+      const Force uk = cg::apply(b, c[i].Ic, w[i].s[d], h + "u");
+      const Force bkk = sub(b, apply(b, c[i].Idc, w[i].s[d], h + "Ids"), crossDual(b, w[i].s[d], c[i].Hc, h + "sxH"), h + "b");
+      const auto us = stash("pair_u", k, uk.n, uk.f), bs = stash("pair_b", k, bkk.n, bkk.f),
+                 ss = stash("pair_s", k, w[i].s[d].w, w[i].s[d].v);
+      u[i].push_back(Force{us[0], us[1]});
+      bk[i].push_back(Force{bs[0], bs[1]});
+      s[i].push_back(Motion{ss[0], ss[1]});
     }
+  if(stashOn)
+  {
+    b.line("detail::opaque(pair_u);");
+    b.line("detail::opaque(pair_b);");
+    b.line("detail::opaque(pair_s);");
+  }
+  const std::vector<PairJoint> pj = stashJoints(b, w, c, stashOn);
   // a_0 = [0; -g] as the forward pass uses it (the root's inherited acceleration)
   Motion a0 = Motion::zero();
   for(int i = 0; i < 3; ++i) a0.v[i] = Scalar::constant(-gravity[i]);
@@ -145,32 +222,32 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
     const MovingJoint & mj = rm.joints[j];
     const bool forward = mj.joint.forward();
     const int p = mj.parent;
-    const Motion v_p = p < 0 ? zeroMotion() : w[static_cast<std::size_t>(p)].v;
-    const Motion a_p = p < 0 ? a0 : w[static_cast<std::size_t>(p)].a;
+    const Motion v_p = p < 0 ? zeroMotion() : pj[static_cast<std::size_t>(p)].v;
+    const Motion a_p = p < 0 ? a0 : pj[static_cast<std::size_t>(p)].a;
     // inherited by the subtree of j: of λ(j), or of j when S is carried by the predecessor
-    const Motion & wv = forward ? v_p : w[j].v;
-    const Motion & aw = forward ? a_p : w[j].a;
-    const Motion & vCarrier = forward ? w[j].v : v_p;
+    const Motion & wv = forward ? v_p : pj[j].v;
+    const Motion & aw = forward ? a_p : pj[j].a;
+    const Motion & vCarrier = forward ? pj[j].v : v_p;
     b.comment(fmt::format("{}: d tau / d q and d tau / d alpha, columns of {}", mj.tag, mj.name));
     for(std::size_t d = 0; d < w[j].s.size(); ++d)
     {
-      const Motion & s = w[j].s[d];
+      const Motion & sm = s[j][d];
       const int col = mj.vIndex + static_cast<int>(d);
       const std::string h = fmt::format("{}_{}", mj.tag, d);
-      const Motion yvQ = cross(b, wv, s, h + "yv");
-      const Motion yaQ = add(b, cross(b, aw, s, h + "axs"), cross(b, cross(b, s, wv, h + "sxw"), wv, h + "sxwxw"), h + "ya");
-      const Motion yaA = add(b, cross(b, vCarrier, s, h + "sd"), yvQ, h + "yaA");
+      const Motion yvQ = cross(b, wv, sm, h + "yv");
+      const Motion yaQ = add(b, cross(b, aw, sm, h + "axs"), cross(b, cross(b, sm, wv, h + "sxw"), wv, h + "sxwxw"), h + "ya");
+      const Motion yaA = add(b, cross(b, vCarrier, sm, h + "sd"), yvQ, h + "yaA");
       // dF of the subtree of j (for the ancestors and for j's own dofs when not carried):
       // dFq = s x* Gc + Ic yaQ + Bc yvQ, dFa = Ic yaA + Bc s, with Bc y = dIc y + y x* Hc
       const bool needDF = p >= 0 || !forward;
       Force dFq, dFa;
       if(needDF)
       {
-        const SubtreeSums & cj = c[j];
-        dFq = cg::add(b, cg::add(b, crossDual(b, s, cj.Gc, h + "sxG"), cg::apply(b, cj.Ic, yaQ, h + "Iya"), h + "dFq1"),
+        const SubtreeSums & cj = pj[j].c;
+        dFq = cg::add(b, cg::add(b, crossDual(b, sm, cj.Gc, h + "sxG"), cg::apply(b, cj.Ic, yaQ, h + "Iya"), h + "dFq1"),
                       cg::add(b, apply(b, cj.Idc, yvQ, h + "Idyv"), crossDual(b, yvQ, cj.Hc, h + "yvxH"), h + "dFq2"), h + "dFq");
         dFa = cg::add(b, cg::apply(b, cj.Ic, yaA, h + "IyaA"),
-                      cg::add(b, apply(b, cj.Idc, s, h + "Ids"), crossDual(b, s, cj.Hc, h + "sxH"), h + "dFa2"), h + "dFa");
+                      cg::add(b, apply(b, cj.Idc, sm, h + "Ids"), crossDual(b, sm, cj.Hc, h + "sxH"), h + "dFa2"), h + "dFa");
       }
       // the subtree of j: joints i >= j whose support path contains j
       for(std::size_t i = j; i < n; ++i)
@@ -185,15 +262,15 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
           const int row = rm.joints[i].vIndex + static_cast<int>(e);
           const std::string hk = fmt::format("d{}_{}", row, col);
           Scalar dq;
-          if(!carried) dq = dot(b, w[i].s[e], dFq, hk + "q");
+          if(!carried) dq = dot(b, s[i][e], dFq, hk + "q");
           else
           {
             std::vector<Term> t{Term{1.0, {dot(b, yaQ, u[i][e], hk + "qa")}}, Term{1.0, {dot(b, yvQ, bk[i][e], hk + "qv")}}};
             if(!fextSums.empty()) // s_k . (s_m x* Fext_i)
-              t.push_back(Term{1.0, {dot(b, w[i].s[e], crossDual(b, s, fextSums[i], hk + "sxF"), hk + "qf")}});
+              t.push_back(Term{1.0, {dot(b, s[i][e], crossDual(b, sm, fextSums[i], hk + "sxF"), hk + "qf")}});
             dq = b.sum(t, hk + "q");
           }
-          const Scalar da = b.sum({Term{1.0, {dot(b, yaA, u[i][e], hk + "aa")}}, Term{1.0, {dot(b, s, bk[i][e], hk + "av")}}},
+          const Scalar da = b.sum({Term{1.0, {dot(b, yaA, u[i][e], hk + "aa")}}, Term{1.0, {dot(b, sm, bk[i][e], hk + "av")}}},
                                   hk + "a");
           onEntry(row, col, dq, da);
         }
@@ -205,7 +282,7 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
         {
           const int row = rm.joints[ak].vIndex + static_cast<int>(e);
           const std::string hk = fmt::format("d{}_{}", row, col);
-          onEntry(row, col, dot(b, w[ak].s[e], dFq, hk + "q"), dot(b, w[ak].s[e], dFa, hk + "a"));
+          onEntry(row, col, dot(b, s[ak][e], dFq, hk + "q"), dot(b, s[ak][e], dFa, hk + "a"));
         }
       }
     }

@@ -1,0 +1,91 @@
+#pragma once
+// Input arrays of the Python API: one state (shape (n,)) or a batch (shape (N, n)) of float64.
+//
+// Policy (the docstrings say the same): a numpy array must already be float64 (native byte order),
+// C-contiguous and aligned, otherwise TypeError (dtype) or ValueError (layout); nothing is copied
+// into another layout behind the caller's back. A Python list or tuple is converted explicitly by
+// numpy.asarray(x, dtype=float64) (a new array: lists have no layout to preserve). Every value must
+// be finite (ValueError naming the argument and the first bad index). Shapes are checked against
+// the robot (ValueError naming the argument and the expected shape).
+#include <cmath>
+#include <string>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+namespace rbdgen_py
+{
+
+namespace py = pybind11;
+
+/// One checked input: data pointer (row-major, N rows of n), N (1 for a single state) and whether
+/// the caller passed a batch. `array` keeps the data alive.
+struct Input
+{
+  py::array array;
+  const double * data = nullptr;
+  py::ssize_t rows = 1;
+  bool batch = false;
+};
+
+inline std::string shapeText(const py::array & a)
+{
+  std::string s = "(";
+  for(py::ssize_t d = 0; d < a.ndim(); ++d) s += (d ? ", " : "") + std::to_string(a.shape(d));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+inline std::string expectedText(py::ssize_t n) { return "(" + std::to_string(n) + ",) or (N, " + std::to_string(n) + ")"; }
+
+/// Check `obj` (argument `name` of `fn`) as one state of size n or a batch (N, n).
+inline Input checkInput(const char * fn, const char * name, const py::object & obj, py::ssize_t n)
+{
+  const std::string where = std::string(fn) + ": argument '" + name + "'";
+  py::array a;
+  if(py::isinstance<py::array>(obj)) a = py::reinterpret_borrow<py::array>(obj);
+  else if(py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj))
+    a = py::module_::import("numpy").attr("asarray")(obj, py::arg("dtype") = "float64");
+  else
+    throw py::type_error(where + " must be a float64 numpy array of shape " + expectedText(n) + ", got "
+                         + std::string(py::str(py::type::of(obj).attr("__name__"))));
+  if(a.dtype().kind() != 'f' || a.itemsize() != 8 || !a.dtype().attr("isnative").cast<bool>())
+    throw py::type_error(where + " must have dtype float64 (native byte order), got " + std::string(py::str(a.dtype()))
+                         + "; convert with numpy.asarray(" + name + ", dtype=numpy.float64)");
+  if(a.ndim() != 1 && a.ndim() != 2)
+    throw py::value_error(where + " must have shape " + expectedText(n) + ", got " + shapeText(a));
+  if(a.shape(a.ndim() - 1) != n)
+    throw py::value_error(where + " must have shape " + expectedText(n) + ", got " + shapeText(a));
+  const int flags = a.flags();
+  if(!(flags & py::detail::npy_api::NPY_ARRAY_C_CONTIGUOUS_) || !(flags & py::detail::npy_api::NPY_ARRAY_ALIGNED_))
+    throw py::value_error(where + " must be C-contiguous and aligned (shape " + shapeText(a)
+                          + " is a strided view); pass numpy.ascontiguousarray(" + name + ")");
+  Input in;
+  in.batch = a.ndim() == 2;
+  in.rows = in.batch ? a.shape(0) : 1;
+  in.data = static_cast<const double *>(a.data());
+  const py::ssize_t total = in.rows * n;
+  for(py::ssize_t k = 0; k < total; ++k)
+    if(!std::isfinite(in.data[k]))
+    {
+      const std::string index = in.batch ? "[" + std::to_string(k / n) + ", " + std::to_string(k % n) + "]"
+                                         : "[" + std::to_string(k) + "]";
+      throw py::value_error(where + " has a non-finite value at " + index);
+    }
+  in.array = std::move(a);
+  return in;
+}
+
+/// The inputs after the first must be single iff the first is, with the same N.
+inline void checkSameBatch(const char * fn, const char * first, const Input & a, const char * name, const Input & b,
+                           py::ssize_t n)
+{
+  if(a.batch != b.batch || a.rows != b.rows)
+  {
+    const std::string expected = a.batch ? "(" + std::to_string(a.rows) + ", " + std::to_string(n) + ")"
+                                         : "(" + std::to_string(n) + ",)";
+    throw py::value_error(std::string(fn) + ": argument '" + name + "' must have shape " + expected + " like '" + first
+                          + "', got " + shapeText(b.array));
+  }
+}
+
+} // namespace rbdgen_py

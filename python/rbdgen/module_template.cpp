@@ -44,29 +44,29 @@ struct GeneratedModel
   }
   void inverseDynamics(Workspace &, const double * q, const double * v, const double * a, double * tau) const
   {
-    Eigen::Map<V>(tau) = g::inverse_dynamics<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
+    Eigen::Map<V>{tau} = g::inverse_dynamics<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
                                                       V(Eigen::Map<const V>(a)));
   }
   void massMatrix(Workspace &, const double * q, double * H) const
   {
-    RowMajorMap<g::nv, g::nv>(H) = g::mass_matrix<double>(Q(Eigen::Map<const Q>(q)));
+    RowMajorMap<g::nv, g::nv>{H} = g::mass_matrix<double>(Q(Eigen::Map<const Q>(q)));
   }
   void forwardDynamics([[maybe_unused]] Workspace & ws, [[maybe_unused]] const double * q,
                        [[maybe_unused]] const double * v, [[maybe_unused]] const double * tau,
                        [[maybe_unused]] double * a) const
   {
 #if @HAS_FD@
-    Eigen::Map<V>(a) = g::forward_dynamics<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
+    Eigen::Map<V>{a} = g::forward_dynamics<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
                                                     V(Eigen::Map<const V>(tau)));
 #endif
   }
   void jacobian(Workspace &, int body, const double * q, double * J) const
   {
-    RowMajorMap<6, g::nv>(J) = g::jacobian<double>(static_cast<g::Body>(body), Q(Eigen::Map<const Q>(q)));
+    RowMajorMap<6, g::nv>{J} = g::jacobian<double>(static_cast<g::Body>(body), Q(Eigen::Map<const Q>(q)));
   }
   void centerOfMass(Workspace &, const double * q, double * c) const
   {
-    Eigen::Map<Eigen::Vector3d>(c) = g::center_of_mass<double>(Q(Eigen::Map<const Q>(q)));
+    Eigen::Map<Eigen::Vector3d>{c} = g::center_of_mass<double>(Q(Eigen::Map<const Q>(q)));
   }
 
   std::string name_ = "@ROBOT@";

@@ -123,7 +123,7 @@ void UrdfModel::jacobian(Workspace & ws, int body, const double * q, double * J)
 void UrdfModel::centerOfMass(Workspace & ws, const double * q, double * c) const
 {
   setState(ws, q, nullptr);
-  Eigen::Map<Eigen::Vector3d>(c) = rbd::computeCoM(mb_, ws.mbc);
+  Eigen::Map<Eigen::Vector3d>{c} = rbd::computeCoM(mb_, ws.mbc);
 }
 
 // --- SceneModel ----------------------------------------------------------------------------------
@@ -170,7 +170,7 @@ void SceneModel::jacobian(Workspace &, int body, const double * q, double * J) c
 
 void SceneModel::centerOfMass(Workspace &, const double * q, double * c) const
 {
-  Eigen::Map<Eigen::Vector3d>(c) = dyn_->centerOfMass(ConstVector(q, nq()));
+  Eigen::Map<Eigen::Vector3d>{c} = dyn_->centerOfMass(ConstVector(q, nq()));
 }
 
 } // namespace rbdgen_py

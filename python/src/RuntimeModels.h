@@ -107,6 +107,26 @@ public:
     std::variant<UrdfModel::Workspace, SceneModel::Workspace> w;
   };
 
+private:
+  // (before their use: their return types are deduced)
+  template<class F>
+  decltype(auto) call(F && f) const
+  {
+    return std::visit(std::forward<F>(f), m_);
+  }
+  /// f(model, its workspace)
+  template<class F>
+  void with(Workspace & ws, F && f) const
+  {
+    std::visit(
+        [&](const auto & m) {
+          using M = std::decay_t<decltype(m)>;
+          f(m, std::get<typename M::Workspace>(ws.w));
+        },
+        m_);
+  }
+
+public:
   template<class M, class... A>
   explicit RuntimeModel(std::in_place_type_t<M> t, A &&... args) : m_(t, std::forward<A>(args)...)
   {
@@ -151,23 +171,6 @@ public:
   }
 
 private:
-  template<class F>
-  decltype(auto) call(F && f) const
-  {
-    return std::visit(std::forward<F>(f), m_);
-  }
-  /// f(model, its workspace)
-  template<class F>
-  void with(Workspace & ws, F && f) const
-  {
-    std::visit(
-        [&](const auto & m) {
-          using M = std::decay_t<decltype(m)>;
-          f(m, std::get<typename M::Workspace>(ws.w));
-        },
-        m_);
-  }
-
   std::variant<UrdfModel, SceneModel> m_;
 };
 

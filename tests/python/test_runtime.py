@@ -108,7 +108,7 @@ def test_batch_equals_loop_of_single_calls(quadruped):
         (tau, lambda i: quadruped.inverse_dynamics(q[i], v[i], a[i])),
         (quadruped.mass_matrix(q), lambda i: quadruped.mass_matrix(q[i])),
         (quadruped.forward_dynamics(q, v, tau), lambda i: quadruped.forward_dynamics(q[i], v[i], tau[i])),
-        (quadruped.jacobian("base", q), lambda i: quadruped.jacobian("base", q[i])),
+        (quadruped.jacobian(quadruped.body_names[-1], q), lambda i: quadruped.jacobian(quadruped.body_names[-1], q[i])),
         (quadruped.center_of_mass(q), lambda i: quadruped.center_of_mass(q[i])),
     ]
     for batch, single in checks:
@@ -134,12 +134,15 @@ def test_empty_batch(ur5e):
 
 
 def test_base_link_changes_the_root_not_the_physics():
-    """Rooted at its last link, the double pendulum's links keep their world poses relative to each other."""
+    """Rooted at its last link, the double pendulum's links keep their poses relative to each other
+    (the dof order follows the new tree: dof_names says which joint each coordinate is)."""
     fixed = rbdgen.Robot.from_urdf(ROBOTS / "double_pendulum.urdf")
     rooted = rbdgen.Robot.from_urdf(ROBOTS / "double_pendulum.urdf", base_link="tip")
     assert rooted.nv == 2 and set(rooted.body_names) == set(fixed.body_names)
-    q = np.array([0.4, -1.1])
-    pf, pr = fixed.forward_kinematics(q), rooted.forward_kinematics(q)
+    assert rooted.dof_names == ["joint2", "joint1"]
+    value = {"joint1": 0.4, "joint2": -1.1}
+    pf = fixed.forward_kinematics(np.array([value[n] for n in fixed.dof_names]))
+    pr = rooted.forward_kinematics(np.array([value[n] for n in rooted.dof_names]))
     i, j = fixed.body_names.index("base"), fixed.body_names.index("link2")
     k, m = rooted.body_names.index("base"), rooted.body_names.index("link2")
     np.testing.assert_allclose(np.linalg.inv(pf[i]) @ pf[j], np.linalg.inv(pr[k]) @ pr[m], atol=1e-14)

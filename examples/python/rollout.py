@@ -30,7 +30,8 @@ def main():
     p.add_argument("--states", type=int, default=1000)
     p.add_argument("--duration", type=float, default=2.0)
     p.add_argument("--dt", type=float, default=1e-3)
-    p.add_argument("--damping", type=float, default=0.5, help="viscous joint damping, N m s/rad")
+    p.add_argument("--damping", type=float, default=0.05,
+                   help="viscous joint damping, N m s/rad (explicit: stable while dt < 2 I_min / damping)")
     p.add_argument("--threads", type=int, default=1)
     p.add_argument("--runtime", action="store_true", help="rbdgen.Robot (runtime) instead of rbdgen.compile")
     p.add_argument("--out", default="rollout.png")

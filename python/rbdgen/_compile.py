@@ -119,6 +119,15 @@ def _build(path, floating_base, base_link, name, robot_name, cxx, final_dir, ver
             shutil.rmtree(work, ignore_errors=True)
 
 
+def module_of(robot):
+    """The module rbdgen.compile built for a compiled robot (its __file__ is in the cache directory,
+    beside the generated header <name>/dynamics.hpp and the module's source module.cpp)."""
+    module = _loaded.get(type(robot).__module__)
+    if module is None:
+        raise TypeError("rbdgen.module_of: not a robot made by rbdgen.compile in this process")
+    return module
+
+
 def compile(path, floating_base=False, base_link=None, *, cache=None, cxx=None, verbose=False):
     """The robot of a URDF, evaluated by its generated C++ (same API as rbdgen.Robot).
 

@@ -8,6 +8,8 @@
 // be finite (ValueError naming the argument and the first bad index). Shapes are checked against
 // the robot (ValueError naming the argument and the expected shape).
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <string>
 
 #include <pybind11/numpy.h>
@@ -17,6 +19,8 @@ namespace rbdgen_py
 {
 
 namespace py = pybind11;
+
+inline constexpr std::uint64_t kExponent = 0x7ff0000000000000ULL;
 
 /// One checked input: data pointer (row-major, N rows of n), N (1 for a single state) and whether
 /// the caller passed a batch. `array` keeps the data alive.
@@ -37,39 +41,53 @@ inline std::string shapeText(const py::array & a)
 
 inline std::string expectedText(py::ssize_t n) { return "(" + std::to_string(n) + ",) or (N, " + std::to_string(n) + ")"; }
 
+/// No NaN or infinity in x[0, n): an exponent of all ones, tested on the bits (a branch-free loop
+/// the compiler vectorises; the scan costs well under 1 % of a batched call).
+inline bool allFinite(const double * x, py::ssize_t n)
+{
+  std::uint64_t bad = 0;
+  for(py::ssize_t k = 0; k < n; ++k)
+  {
+    std::uint64_t bits;
+    std::memcpy(&bits, x + k, sizeof bits);
+    bad |= static_cast<std::uint64_t>((bits & kExponent) == kExponent);
+  }
+  return bad == 0;
+}
+
 /// Check `obj` (argument `name` of `fn`) as one state of size n or a batch (N, n).
 inline Input checkInput(const char * fn, const char * name, const py::object & obj, py::ssize_t n)
 {
-  const std::string where = std::string(fn) + ": argument '" + name + "'";
+  const auto where = [fn, name] { return std::string(fn) + ": argument '" + name + "'"; }; // errors only
   py::array a;
   if(py::isinstance<py::array>(obj)) a = py::reinterpret_borrow<py::array>(obj);
   else if(py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj))
     a = py::module_::import("numpy").attr("asarray")(obj, py::arg("dtype") = "float64");
   else
-    throw py::type_error(where + " must be a float64 numpy array of shape " + expectedText(n) + ", got "
+    throw py::type_error(where() + " must be a float64 numpy array of shape " + expectedText(n) + ", got "
                          + std::string(py::str(py::type::of(obj).attr("__name__"))));
-  if(a.dtype().kind() != 'f' || a.itemsize() != 8 || !a.dtype().attr("isnative").cast<bool>())
-    throw py::type_error(where + " must have dtype float64 (native byte order), got " + std::string(py::str(a.dtype()))
+  if(!py::detail::npy_api::get().PyArray_EquivTypes_(a.dtype().ptr(), py::dtype::of<double>().ptr()))
+    throw py::type_error(where() + " must have dtype float64 (native byte order), got " + std::string(py::str(a.dtype()))
                          + "; convert with numpy.asarray(" + name + ", dtype=numpy.float64)");
   if(a.ndim() != 1 && a.ndim() != 2)
-    throw py::value_error(where + " must have shape " + expectedText(n) + ", got " + shapeText(a));
+    throw py::value_error(where() + " must have shape " + expectedText(n) + ", got " + shapeText(a));
   if(a.shape(a.ndim() - 1) != n)
-    throw py::value_error(where + " must have shape " + expectedText(n) + ", got " + shapeText(a));
+    throw py::value_error(where() + " must have shape " + expectedText(n) + ", got " + shapeText(a));
   const int flags = a.flags();
   if(!(flags & py::detail::npy_api::NPY_ARRAY_C_CONTIGUOUS_) || !(flags & py::detail::npy_api::NPY_ARRAY_ALIGNED_))
-    throw py::value_error(where + " must be C-contiguous and aligned (shape " + shapeText(a)
+    throw py::value_error(where() + " must be C-contiguous and aligned (shape " + shapeText(a)
                           + " is a strided view); pass numpy.ascontiguousarray(" + name + ")");
   Input in;
   in.batch = a.ndim() == 2;
   in.rows = in.batch ? a.shape(0) : 1;
   in.data = static_cast<const double *>(a.data());
-  const py::ssize_t total = in.rows * n;
+  const py::ssize_t total = allFinite(in.data, in.rows * n) ? 0 : in.rows * n; // then find the first bad value
   for(py::ssize_t k = 0; k < total; ++k)
     if(!std::isfinite(in.data[k]))
     {
       const std::string index = in.batch ? "[" + std::to_string(k / n) + ", " + std::to_string(k % n) + "]"
                                          : "[" + std::to_string(k) + "]";
-      throw py::value_error(where + " has a non-finite value at " + index);
+      throw py::value_error(where() + " has a non-finite value at " + index);
     }
   in.array = std::move(a);
   return in;

@@ -124,7 +124,10 @@ def test_threads_give_bitwise_the_same_results(quadruped):
         np.testing.assert_array_equal(quadruped.forward_dynamics(q, v, a), quadruped.forward_dynamics(q, v, a, threads=threads))
         np.testing.assert_array_equal(quadruped.mass_matrix(q), quadruped.mass_matrix(q, threads=threads))
         np.testing.assert_array_equal(quadruped.forward_kinematics(q), quadruped.forward_kinematics(q, threads=threads))
-        np.testing.assert_array_equal(quadruped.jacobian(3, q), quadruped.jacobian(3, q, threads=threads))
+        np.testing.assert_array_equal(quadruped.jacobian(3, q), quadruped.jacobian(np.int64(3), q, threads=threads))
+    # more threads than states, and than the cap of 256 threads per call
+    np.testing.assert_array_equal(quadruped.mass_matrix(q[:3]), quadruped.mass_matrix(q[:3], threads=8))
+    np.testing.assert_array_equal(quadruped.center_of_mass(q), quadruped.center_of_mass(q, threads=100000))
 
 
 def test_empty_batch(ur5e):
@@ -165,3 +168,29 @@ def test_scene_robot_has_the_scene_effects(scenes):
     np.testing.assert_allclose(H @ a, tau - scene.inverse_dynamics(q, v, zero), atol=1e-12)
     assert scene.center_of_mass(q).shape == (3,)
     assert scene.jacobian(scene.body_names[-1], q).shape == (6, scene.nv)
+
+
+def test_batches_release_the_gil_and_share_the_robot(quadruped):
+    """While a batch runs in one Python thread, others run Python code and call the same robot (single
+    states and batches); every result equals the sequential one."""
+    import threading
+
+    q, v, a = random_states(quadruped, 10000, seed=9, floating=True)
+    expected = quadruped.inverse_dynamics(q, v, a)
+    results, progress = {}, []
+
+    def batch(key):
+        results[key] = quadruped.inverse_dynamics(q, v, a)
+
+    workers = [threading.Thread(target=batch, args=(k,)) for k in range(3)]
+    for w in workers:
+        w.start()
+    while any(w.is_alive() for w in workers):
+        progress.append(quadruped.inverse_dynamics(q[7], v[7], a[7]))
+    for w in workers:
+        w.join()
+    for k in range(3):
+        np.testing.assert_array_equal(results[k], expected)
+    assert len(progress) > 10  # the main thread ran while the batches did
+    for tau in progress:
+        np.testing.assert_array_equal(tau, expected[7])

@@ -91,10 +91,11 @@ public:
       for(std::size_t i = 0; i < names.size(); ++i) known += (i ? ", '" : "'") + names[i] + "'";
       throw py::key_error(std::string(fn) + ": argument 'body': unknown link '" + name + "'; links: " + known);
     }
-    if(py::isinstance<py::int_>(body) && !py::isinstance<py::bool_>(body))
+    if(PyIndex_Check(body.ptr()) && !py::isinstance<py::bool_>(body)) // int, numpy integers
     {
-      const long long i = body.cast<long long>();
-      if(i < 0 || i >= static_cast<long long>(names.size()))
+      const Py_ssize_t i = PyNumber_AsSsize_t(body.ptr(), nullptr); // clamped when out of range
+      if(i == -1 && PyErr_Occurred()) throw py::error_already_set();
+      if(i < 0 || i >= static_cast<Py_ssize_t>(names.size()))
         throw py::index_error(std::string(fn) + ": argument 'body': index " + std::to_string(i) + " out of range [0, "
                               + std::to_string(names.size()) + ")");
       return static_cast<int>(i);
@@ -112,7 +113,7 @@ inline constexpr const char * kArrayPolicy =
     "dtype=float64)); another dtype raises TypeError, a strided view ValueError (nothing is copied behind "
     "your back); non-finite values and wrong shapes raise ValueError. One state (n,) gives one result; a "
     "batch (N, n) gives N results (N, ...), computed with the GIL released on `threads` threads "
-    "(bitwise the same results for any thread count).";
+    "(at most 256, contiguous chunks of the batch; bitwise the same results for any thread count).";
 
 inline std::string doc(const std::string & what) { return what + "\n\n" + kArrayPolicy; }
 

@@ -8,6 +8,7 @@
 #include <exception>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -21,11 +22,14 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+/// At most this many threads per call (more would only add start-up cost; results do not depend on it).
+inline constexpr int kMaxThreads = 256;
+
 /// For each chunk: ws = makeWorkspace(); for i in chunk: body(ws, i). Returns after every thread joined.
 template<class MakeWorkspace, class Body>
 void parallelFor(std::ptrdiff_t n, int threads, MakeWorkspace && makeWorkspace, Body && body)
 {
-  const std::ptrdiff_t nthreads = std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>(threads, n));
+  const std::ptrdiff_t nthreads = std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>({threads, n, kMaxThreads}));
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(nthreads));
   std::vector<std::ptrdiff_t> failedAt(static_cast<std::size_t>(nthreads), -1);
   auto run = [&](std::ptrdiff_t t) {
@@ -47,8 +51,16 @@ void parallelFor(std::ptrdiff_t n, int threads, MakeWorkspace && makeWorkspace, 
   {
     std::vector<std::thread> pool;
     pool.reserve(static_cast<std::size_t>(nthreads - 1));
-    for(std::ptrdiff_t t = 1; t < nthreads; ++t) pool.emplace_back(run, t);
+    std::ptrdiff_t started = 1;
+    try
+    {
+      for(; started < nthreads; ++started) pool.emplace_back(run, started);
+    }
+    catch(const std::system_error &) // no more threads: this one runs the chunks not started
+    {
+    }
     run(0);
+    for(std::ptrdiff_t t = started; t < nthreads; ++t) run(t);
     for(auto & th : pool) th.join();
   }
   for(std::size_t t = 0; t < errors.size(); ++t)

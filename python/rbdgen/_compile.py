@@ -27,8 +27,14 @@ _TEMPLATE = _PKG_DIR / "module_template.cpp"
 _HEADERS = ("arrays.hpp", "parallel.hpp", "bind.hpp")
 CXXFLAGS = ("-O2", "-march=native", "-DNDEBUG", "-std=c++17", "-fPIC", "-shared", "-fvisibility=hidden")
 
+# sysconfig fills its variables lazily and not thread-safely (CPython 3.11: a second thread may see
+# them half-initialised, EXT_SUFFIX None): read once, at import.
+_EXT_SUFFIX = sysconfig.get_config_var("EXT_SUFFIX")
+_PYTHON_INCLUDE = sysconfig.get_paths()["include"]
+
 _loaded = {}  # module name -> module (an extension module is initialised once per process)
-_lock = threading.Lock()
+_locks = {}  # module name -> lock: one build per module at a time, different robots in parallel
+_locks_lock = threading.Lock()
 
 
 def cache_dir():
@@ -79,7 +85,7 @@ def _key(data, floating_base, base_link, cxx):
              _TEMPLATE.read_bytes()]
     parts += [(_INCLUDE_DIR / "rbdgen_py" / name).read_bytes() for name in _HEADERS]
     parts += [cxx.encode(), " ".join(CXXFLAGS).encode(), _config.EIGEN_INCLUDE.encode(),
-              sysconfig.get_config_var("EXT_SUFFIX").encode(), sys.version.encode(), _cpu_model().encode()]
+              _EXT_SUFFIX.encode(), sys.version.encode(), _cpu_model().encode()]
     for p in parts:
         h.update(len(p).to_bytes(8, "little"))
         h.update(p)
@@ -98,9 +104,9 @@ def _build(path, floating_base, base_link, name, robot_name, cxx, final_dir, ver
         source = (_TEMPLATE.read_text().replace("@NAME@", name).replace("@HAS_FD@", "1" if has_fd else "0")
                   .replace('"@ROBOT@"', _cxx_string(robot_name)).replace("@ROBOT@", name))
         (work / "module.cpp").write_text(source)
-        so_name = name + sysconfig.get_config_var("EXT_SUFFIX")
+        so_name = name + _EXT_SUFFIX
         includes = [str(work), str(_INCLUDE_DIR)] + _config.EIGEN_INCLUDE.split(";") + \
-            [_config.PYBIND11_INCLUDE, sysconfig.get_paths()["include"]]
+            [_config.PYBIND11_INCLUDE, _PYTHON_INCLUDE]
         cmd = [cxx, *CXXFLAGS] + ["-I" + d for d in includes if d] + [str(work / "module.cpp"), "-o", str(work / so_name)]
         (work / "command.txt").write_text(" ".join(cmd) + "\n")
         if verbose:
@@ -150,8 +156,10 @@ def compile(path, floating_base=False, base_link=None, *, cache=None, cxx=None, 
     name = "rbdgen_robot_" + key[:24]
     final_dir = Path(cache) if cache is not None else cache_dir()
     final_dir = final_dir / name
-    so = final_dir / (name + sysconfig.get_config_var("EXT_SUFFIX"))
-    with _lock:
+    so = final_dir / (name + _EXT_SUFFIX)
+    with _locks_lock:
+        lock = _locks.setdefault(name, threading.Lock())
+    with lock:
         module = _loaded.get(name)
         if module is None:
             if not so.exists():

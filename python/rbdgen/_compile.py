@@ -79,9 +79,17 @@ def _is_scene(data):
     return False
 
 
-def _key(data, floating_base, base_link, cxx):
+def module_source(template, module, namespace, robot_name, has_fd, has_derivatives):
+    """The module's C++ source from module_template.cpp's text (cmake/RbdgenPythonModule.cmake does the same)."""
+    return (template.replace("@MODULE@", module).replace("@NS@", namespace)
+            .replace("@ROBOT_STRING@", _cxx_string(robot_name))
+            .replace("@HAS_FD@", "1" if has_fd else "0").replace("@HAS_DERIVATIVES@", "1" if has_derivatives else "0"))
+
+
+def _key(data, floating_base, base_link, cxx, derivatives=True):
     h = hashlib.sha256()
-    parts = [b"rbdgen", _core.__version__.encode(), data, repr((bool(floating_base), base_link or "")).encode(),
+    parts = [b"rbdgen", _core.__version__.encode(), data,
+             repr((bool(floating_base), base_link or "", bool(derivatives))).encode(),
              _TEMPLATE.read_bytes()]
     parts += [(_INCLUDE_DIR / "rbdgen_py" / name).read_bytes() for name in _HEADERS]
     parts += [cxx.encode(), " ".join(CXXFLAGS).encode(), _config.EIGEN_INCLUDE.encode(),
@@ -92,17 +100,17 @@ def _key(data, floating_base, base_link, cxx):
     return h.hexdigest()
 
 
-def _build(path, floating_base, base_link, name, robot_name, cxx, final_dir, verbose):
+def _build(path, floating_base, base_link, derivatives, name, robot_name, cxx, final_dir, verbose):
     """Generate, write and compile into a temporary directory, then move it to final_dir."""
     final_dir.parent.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix=name + ".tmp-", dir=final_dir.parent))
     try:
-        header = _core._generate_header(path, floating_base, base_link or "", name)
+        header = _core._generate_header(path, floating_base, base_link or "", name, derivatives)
         (work / header["path"]).parent.mkdir(parents=True, exist_ok=True)
         (work / header["path"]).write_bytes(header["content"])
         has_fd = b"constexpr bool has_forward_dynamics = true;" in header["content"]
-        source = (_TEMPLATE.read_text().replace("@NAME@", name).replace("@HAS_FD@", "1" if has_fd else "0")
-                  .replace('"@ROBOT@"', _cxx_string(robot_name)).replace("@ROBOT@", name))
+        has_derivatives = b"constexpr bool has_derivatives = true;" in header["content"]
+        source = module_source(_TEMPLATE.read_text(), name, name, robot_name, has_fd, has_derivatives)
         (work / "module.cpp").write_text(source)
         so_name = name + _EXT_SUFFIX
         includes = [str(work), str(_INCLUDE_DIR)] + _config.EIGEN_INCLUDE.split(";") + \
@@ -134,14 +142,15 @@ def module_of(robot):
     return module
 
 
-def compile(path, floating_base=False, base_link=None, *, cache=None, cxx=None, verbose=False):
+def compile(path, floating_base=False, base_link=None, *, derivatives=True, cache=None, cxx=None, verbose=False):
     """The robot of a URDF, evaluated by its generated C++ (same API as rbdgen.Robot).
 
     The first call generates the header (rbdgen's generator), writes a pybind11 module around it,
     compiles it with the system C++ compiler (``$RBDGEN_CXX``, else the one rbdgen was built with;
     flags ``-O2 -march=native``) and imports it; the result is cached in ``cache`` (default
     ``cache_dir()``) under the sha256 of the inputs and rbdgen's version, so the next call with the
-    same inputs only imports it. Raises FileNotFoundError (no such URDF), ValueError (a broken URDF,
+    same inputs only imports it. ``derivatives``: also generate inverse_dynamics_derivatives and
+    forward_dynamics_derivatives (default; False compiles faster and the two raise RuntimeError). Raises FileNotFoundError (no such URDF), ValueError (a broken URDF,
     or a scene file: scenes are evaluated by ``rbdgen.Robot.from_scene``), RuntimeError (the
     compiler failed; the message holds its errors and the command).
     """
@@ -152,7 +161,7 @@ def compile(path, floating_base=False, base_link=None, *, cache=None, cxx=None, 
         raise ValueError("rbdgen.compile: %s is a scene file; compile takes a URDF (use rbdgen.Robot.from_scene "
                          "for a scene's dynamics)" % path)
     cxx = cxx or _compiler()
-    key = _key(data, floating_base, base_link, cxx)
+    key = _key(data, floating_base, base_link, cxx, derivatives)
     name = "rbdgen_robot_" + key[:24]
     final_dir = Path(cache) if cache is not None else cache_dir()
     final_dir = final_dir / name
@@ -165,7 +174,7 @@ def compile(path, floating_base=False, base_link=None, *, cache=None, cxx=None, 
             if not so.exists():
                 # the runtime checks the URDF (one-line errors) and gives the robot's name
                 robot_name = _core.Robot.from_urdf(path, floating_base, base_link).name
-                _build(path, floating_base, base_link, name, robot_name, cxx, final_dir, verbose)
+                _build(path, floating_base, base_link, derivatives, name, robot_name, cxx, final_dir, verbose)
             spec = importlib.util.spec_from_file_location(name, so)
             module = importlib.util.module_from_spec(spec)
             spec.loader.exec_module(module)

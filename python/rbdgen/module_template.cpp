@@ -1,14 +1,17 @@
-// A robot's generated dynamics (namespace @NAME@) as a Python module, written by rbdgen.compile:
-// @NAME@ is the module name, @ROBOT@ the robot's name, @HAS_FD@ whether the header has forward
-// dynamics. The class is the one of rbdgen.Robot (rbdgen_py/bind.hpp), on the generated functions.
-#include <@NAME@/dynamics.hpp>
+// A robot's generated dynamics as a Python module, written by rbdgen.compile and by
+// generate_robot_dynamics(... PYTHON_MODULE name) (cmake/RbdgenPythonModule.cmake), which replace
+// these words between @ signs: MODULE (the module name), NS (the namespace of the generated header
+// NS/dynamics.hpp), ROBOT_STRING (the robot's name as a C++ string literal), HAS_FD and
+// HAS_DERIVATIVES (0 or 1: whether the header has forward_dynamics, and the derivatives).
+// The class is the one of rbdgen.Robot (rbdgen_py/bind.hpp), on the generated functions.
+#include <@NS@/dynamics.hpp>
 
 #include <rbdgen_py/bind.hpp>
 
-namespace @NAME@_ns
+namespace @MODULE@_ns
 {
 
-namespace g = ::@NAME@;
+namespace g = ::@NS@;
 
 /// Row-major R x C map (an Eigen column vector cannot be declared row-major; same layout anyway).
 template<int R, int C>
@@ -69,15 +72,43 @@ struct GeneratedModel
     Eigen::Map<Eigen::Vector3d>{c} = g::center_of_mass<double>(Q(Eigen::Map<const Q>(q)));
   }
 
-  std::string name_ = "@ROBOT@";
+  bool hasDerivatives() const { return @HAS_DERIVATIVES@; }
+  std::string noDerivativesReason() const { return "generated without derivatives"; }
+  void inverseDynamicsDerivatives([[maybe_unused]] Workspace & ws, [[maybe_unused]] const double * q,
+                                  [[maybe_unused]] const double * v, [[maybe_unused]] const double * a,
+                                  [[maybe_unused]] double * dtauDq, [[maybe_unused]] double * dtauDv) const
+  {
+#if @HAS_DERIVATIVES@
+    const auto d = g::inverse_dynamics_derivatives<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
+                                                           V(Eigen::Map<const V>(a)));
+    RowMajorMap<g::nv, g::nv>{dtauDq} = d.dtau_dq;
+    RowMajorMap<g::nv, g::nv>{dtauDv} = d.dtau_dalpha;
+#endif
+  }
+  void forwardDynamicsDerivatives([[maybe_unused]] Workspace & ws, [[maybe_unused]] const double * q,
+                                  [[maybe_unused]] const double * v, [[maybe_unused]] const double * tau,
+                                  [[maybe_unused]] double * a, [[maybe_unused]] double * daDq,
+                                  [[maybe_unused]] double * daDv, [[maybe_unused]] double * Minv) const
+  {
+#if @HAS_DERIVATIVES@ && @HAS_FD@
+    const auto d = g::forward_dynamics_derivatives<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
+                                                           V(Eigen::Map<const V>(tau)));
+    Eigen::Map<V>{a} = d.alphaD;
+    RowMajorMap<g::nv, g::nv>{daDq} = d.dalphaD_dq;
+    RowMajorMap<g::nv, g::nv>{daDv} = d.dalphaD_dalpha;
+    RowMajorMap<g::nv, g::nv>{Minv} = d.Minv;
+#endif
+  }
+
+  std::string name_ = @ROBOT_STRING@;
 };
 
-} // namespace @NAME@_ns
+} // namespace @MODULE@_ns
 
-PYBIND11_MODULE(@NAME@, m)
+PYBIND11_MODULE(@MODULE@, m)
 {
-  m.doc() = "rbdgen.compile: the generated dynamics of '@ROBOT@'";
-  using @NAME@_ns::GeneratedModel;
+  m.doc() = "The generated dynamics of the robot " @ROBOT_STRING@ " (rbdgen); robot() gives its object";
+  using @MODULE@_ns::GeneratedModel;
   rbdgen_py::bindRobot<GeneratedModel>(m, "CompiledRobot",
                                        "A robot evaluated by its generated code (rbdgen.compile); the API of rbdgen.Robot.", true);
   m.def("robot", [] { return rbdgen_py::Robot<GeneratedModel>(std::make_shared<const GeneratedModel>()); });

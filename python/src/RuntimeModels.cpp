@@ -61,7 +61,13 @@ std::vector<std::string> UrdfModel::bodyNames() const
 
 UrdfModel::Workspace UrdfModel::makeWorkspace() const
 {
-  Workspace ws{rbd::MultiBodyConfig(mb_), rbd::InverseDynamics(mb_), rbd::ForwardDynamics(mb_), {}, {},
+  Workspace ws{rbd::MultiBodyConfig(mb_),
+               rbd::InverseDynamics(mb_),
+               rbd::ForwardDynamics(mb_),
+               rbd::InverseDynamicsDerivatives(mb_),
+               rbd::ForwardDynamicsDerivatives(mb_),
+               {},
+               {},
                Eigen::VectorXd::Zero(nv())};
   ws.jacobians.resize(static_cast<std::size_t>(nbodies()));
   return ws;
@@ -126,6 +132,28 @@ void UrdfModel::centerOfMass(Workspace & ws, const double * q, double * c) const
   Eigen::Map<Eigen::Vector3d>{c} = rbd::computeCoM(mb_, ws.mbc);
 }
 
+void UrdfModel::inverseDynamicsDerivatives(Workspace & ws, const double * q, const double * v, const double * a,
+                                           double * dtauDq, double * dtauDv) const
+{
+  setState(ws, q, v);
+  rbd::vectorToDof<double>(ConstVector(a, nv()), ws.mbc.alphaD);
+  ws.idd.inverseDynamicsDerivatives(mb_, ws.mbc);
+  Eigen::Map<RowMatrix>(dtauDq, nv(), nv()) = ws.idd.dtauDq();
+  Eigen::Map<RowMatrix>(dtauDv, nv(), nv()) = ws.idd.dtauDalpha();
+}
+
+void UrdfModel::forwardDynamicsDerivatives(Workspace & ws, const double * q, const double * v, const double * tau,
+                                           double * a, double * daDq, double * daDv, double * Minv) const
+{
+  setState(ws, q, v);
+  rbd::vectorToDof<double>(ConstVector(tau, nv()), ws.mbc.jointTorque);
+  ws.fdd.forwardDynamicsDerivatives(mb_, ws.mbc); // throws std::runtime_error when the result is not finite
+  Eigen::Map<Eigen::VectorXd>(a, nv()) = ws.fdd.alphaD();
+  Eigen::Map<RowMatrix>(daDq, nv(), nv()) = ws.fdd.dalphaDDq();
+  Eigen::Map<RowMatrix>(daDv, nv(), nv()) = ws.fdd.dalphaDDalpha();
+  Eigen::Map<RowMatrix>(Minv, nv(), nv()) = ws.fdd.Minv();
+}
+
 // --- SceneModel ----------------------------------------------------------------------------------
 
 SceneModel::SceneModel(const std::string & path)
@@ -171,6 +199,25 @@ void SceneModel::jacobian(Workspace &, int body, const double * q, double * J) c
 void SceneModel::centerOfMass(Workspace &, const double * q, double * c) const
 {
   Eigen::Map<Eigen::Vector3d>{c} = dyn_->centerOfMass(ConstVector(q, nq()));
+}
+
+void SceneModel::inverseDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * a,
+                                            double * dtauDq, double * dtauDv) const
+{
+  const auto d = dyn_->inverseDynamicsDerivatives(ConstVector(q, nq()), ConstVector(v, nv()), ConstVector(a, nv()));
+  Eigen::Map<RowMatrix>(dtauDq, nv(), nv()) = d.dtauDq;
+  Eigen::Map<RowMatrix>(dtauDv, nv(), nv()) = d.dtauDalpha;
+}
+
+void SceneModel::forwardDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * tau,
+                                            double * a, double * daDq, double * daDv, double * Minv) const
+{
+  const auto d = dyn_->forwardDynamicsDerivatives(ConstVector(q, nq()), ConstVector(v, nv()), ConstVector(tau, nv()));
+  if(!d.alphaD.allFinite()) throw std::runtime_error("forward dynamics: joint acceleration is not finite");
+  Eigen::Map<Eigen::VectorXd>(a, nv()) = d.alphaD;
+  Eigen::Map<RowMatrix>(daDq, nv(), nv()) = d.dalphaDDq;
+  Eigen::Map<RowMatrix>(daDv, nv(), nv()) = d.dalphaDDalpha;
+  Eigen::Map<RowMatrix>(Minv, nv(), nv()) = d.Minv;
 }
 
 } // namespace rbdgen_py

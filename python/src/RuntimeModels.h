@@ -14,7 +14,9 @@
 #include <vector>
 
 #include <rbd/FD.h>
+#include <rbd/FDDerivatives.h>
 #include <rbd/ID.h>
+#include <rbd/IDDerivatives.h>
 #include <rbd/Jacobian.h>
 #include <rbd/MultiBody.h>
 #include <rbd/MultiBodyConfig.h>
@@ -32,6 +34,8 @@ public:
     rbd::MultiBodyConfig mbc;
     rbd::InverseDynamics id;
     rbd::ForwardDynamics fd;
+    rbd::InverseDynamicsDerivatives idd;
+    rbd::ForwardDynamicsDerivatives fdd;
     std::vector<std::optional<rbd::Jacobian>> jacobians; ///< per body, made on first use
     Eigen::MatrixXd fullJacobian;
     Eigen::VectorXd tau;
@@ -54,6 +58,12 @@ public:
   void forwardDynamics(Workspace & ws, const double * q, const double * v, const double * tau, double * a) const;
   void jacobian(Workspace & ws, int body, const double * q, double * J) const;
   void centerOfMass(Workspace & ws, const double * q, double * c) const;
+  bool hasDerivatives() const { return true; }
+  std::string noDerivativesReason() const { return {}; }
+  void inverseDynamicsDerivatives(Workspace & ws, const double * q, const double * v, const double * a, double * dtauDq,
+                                  double * dtauDv) const;
+  void forwardDynamicsDerivatives(Workspace & ws, const double * q, const double * v, const double * tau, double * a,
+                                  double * daDq, double * daDv, double * Minv) const;
 
   const std::vector<std::string> & warnings() const { return warnings_; }
 
@@ -91,6 +101,13 @@ public:
   void forwardDynamics(Workspace &, const double * q, const double * v, const double * tau, double * a) const;
   void jacobian(Workspace &, int body, const double * q, double * J) const;
   void centerOfMass(Workspace &, const double * q, double * c) const;
+  /// Not for a scene with contacts (SceneDynamics does not provide them).
+  bool hasDerivatives() const { return dyn_->scene().contacts.empty(); }
+  std::string noDerivativesReason() const { return "the derivatives of a scene with contacts are not provided"; }
+  void inverseDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * a, double * dtauDq,
+                                  double * dtauDv) const;
+  void forwardDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * tau, double * a,
+                                  double * daDq, double * daDv, double * Minv) const;
 
 private:
   std::unique_ptr<rbd::scene::SceneDynamics> dyn_;
@@ -168,6 +185,18 @@ public:
   void centerOfMass(Workspace & ws, const double * q, double * c) const
   {
     with(ws, [&](const auto & m, auto & w) { m.centerOfMass(w, q, c); });
+  }
+  bool hasDerivatives() const { return call([](const auto & m) { return m.hasDerivatives(); }); }
+  std::string noDerivativesReason() const { return call([](const auto & m) { return m.noDerivativesReason(); }); }
+  void inverseDynamicsDerivatives(Workspace & ws, const double * q, const double * v, const double * a, double * dtauDq,
+                                  double * dtauDv) const
+  {
+    with(ws, [&](const auto & m, auto & w) { m.inverseDynamicsDerivatives(w, q, v, a, dtauDq, dtauDv); });
+  }
+  void forwardDynamicsDerivatives(Workspace & ws, const double * q, const double * v, const double * tau, double * a,
+                                  double * daDq, double * daDv, double * Minv) const
+  {
+    with(ws, [&](const auto & m, auto & w) { m.forwardDynamicsDerivatives(w, q, v, tau, a, daDq, daDv, Minv); });
   }
 
 private:

@@ -26,13 +26,15 @@ std::string fspath(const py::object & path)
 }
 
 /// The header generated for a URDF (nothing written): rbdgen.compile's input.
-py::dict generateHeader(const py::object & path, bool floatingBase, const std::string & baseLink, const std::string & ns)
+py::dict generateHeader(const py::object & path, bool floatingBase, const std::string & baseLink, const std::string & ns,
+                        bool derivatives)
 {
   rbdgen::GenerateOptions opt;
   opt.urdf = fspath(path);
   opt.floatingBase = floatingBase;
   opt.baseLink = baseLink;
   opt.ns = ns;
+  opt.derivatives = derivatives;
   const std::vector<rbdgen::GeneratedFile> files = rbdgen::generateFiles(opt);
   py::dict result;
   result["path"] = files.front().path;
@@ -91,5 +93,5 @@ PYBIND11_MODULE(_core, m)
           "and ground contacts (no external wrench). A broken scene raises ValueError.");
 
   m.def("_generate_header", &generateHeader, py::arg("path"), py::arg("floating_base"), py::arg("base_link"),
-        py::arg("namespace"), "The generated header of a URDF, in memory: dict(path=relative path, content=bytes).");
+        py::arg("namespace"), py::arg("derivatives") = false, "The generated header of a URDF, in memory: dict(path=relative path, content=bytes).");
 }

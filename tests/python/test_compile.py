@@ -35,7 +35,10 @@ def first_compiles(cache, heavy_pendulum):
     compiler runs): {(urdf, floating): (robot, seconds)}."""
     def build(urdf, floating):
         start = time.perf_counter()
-        robot = rbdgen.compile(urdf if urdf == heavy_pendulum else ROBOTS / urdf, floating_base=floating, cache=cache)
+        if urdf == heavy_pendulum:  # (and without derivatives)
+            robot = rbdgen.compile(urdf, floating_base=floating, derivatives=False, cache=cache)
+        else:
+            robot = rbdgen.compile(ROBOTS / urdf, floating_base=floating, cache=cache)
         return robot, time.perf_counter() - start
 
     jobs = ROBOTS_COMPILED + [(heavy_pendulum, False)]
@@ -59,6 +62,7 @@ def test_same_robot(pair):
     assert compiled.body_names == runtime.body_names
     assert compiled.name == runtime.name
     assert compiled.has_forward_dynamics
+    assert compiled.has_derivatives
 
 
 def test_generated_equals_runtime(pair):
@@ -72,6 +76,27 @@ def test_generated_equals_runtime(pair):
         assert rel_err(compiled.jacobian(body, q), runtime.jacobian(body, q)) < BOUND, body
     # forward dynamics: two correct solvers differ by about cond(H) eps (here cond(H) < 1e5)
     assert rel_err(compiled.forward_dynamics(q, v, a), runtime.forward_dynamics(q, v, a)) < 1e-10
+
+
+def test_generated_derivatives_equal_runtime(pair):
+    """Against the runtime's derivatives (themselves checked against finite differences in
+    test_derivatives.py); d a/dq carries H^-1 twice: a looser bound, as in tests/generator."""
+    compiled, runtime, floating, _ = pair
+    q, v, a = random_states(runtime, 20, seed=10, floating=floating)
+    for x, y in zip(compiled.inverse_dynamics_derivatives(q, v, a), runtime.inverse_dynamics_derivatives(q, v, a)):
+        assert rel_err(x, y) < BOUND
+    names = ["a", "da_dq", "da_dv", "Minv"]
+    for name, x, y, bound in zip(names, compiled.forward_dynamics_derivatives(q, v, a),
+                                 runtime.forward_dynamics_derivatives(q, v, a), [1e-12, 1e-10, 1e-10, 1e-12]):
+        assert rel_err(x, y) < bound, name
+    # batch = single calls, any thread count
+    fds = compiled.forward_dynamics_derivatives(q, v, a, threads=3)
+    ids = compiled.inverse_dynamics_derivatives(q, v, a, threads=2)
+    for i in (0, 7, 19):
+        for x, y in zip(fds, compiled.forward_dynamics_derivatives(q[i], v[i], a[i])):
+            np.testing.assert_array_equal(x[i], y)
+        for x, y in zip(ids, compiled.inverse_dynamics_derivatives(q[i], v[i], a[i])):
+            np.testing.assert_array_equal(x[i], y)
 
 
 def test_compiled_batch_threads_and_errors(pair):
@@ -116,11 +141,17 @@ def test_cache_is_keyed_by_the_inputs(cache, heavy_pendulum, first_compiles):
     q = np.array([0.5])
     assert compiled.mass_matrix(q)[0, 0] == pytest.approx(2 + 4e-5, rel=1e-14)
     assert rel_err(compiled.inverse_dynamics(q, q, q), rbdgen.Robot.from_urdf(heavy).inverse_dynamics(q, q, q)) < BOUND
+    assert not compiled.has_derivatives  # compiled with derivatives=False
+    with pytest.raises(RuntimeError, match="inverse_dynamics_derivatives: not available .*without derivatives"):
+        compiled.inverse_dynamics_derivatives(q, q, q)
+    with pytest.raises(RuntimeError, match="forward_dynamics_derivatives: not available"):
+        compiled.forward_dynamics_derivatives(q, q, q)
     key = _compile._key(urdf, False, None, "c++")
     assert key == _compile._key(urdf, False, None, "c++")
     others = [_compile._key(urdf.replace(b"1", b"2", 1), False, None, "c++"), _compile._key(urdf, True, None, "c++"),
-              _compile._key(urdf, False, "link1", "c++"), _compile._key(urdf, False, None, "clang++")]
-    assert len({key, *others}) == 5
+              _compile._key(urdf, False, "link1", "c++"), _compile._key(urdf, False, None, "clang++"),
+              _compile._key(urdf, False, None, "c++", derivatives=False)]
+    assert len({key, *others}) == 6
 
 
 def test_compile_errors(tmp_path, cache):

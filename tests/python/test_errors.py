@@ -62,6 +62,23 @@ def test_mismatched_batches(ur5e):
         ur5e.inverse_dynamics(Q, np.zeros(7), Q)
 
 
+@pytest.mark.parametrize("fn, third", [("inverse_dynamics_derivatives", "a"), ("forward_dynamics_derivatives", "tau")])
+def test_derivatives_check_their_arguments(ur5e, fn, third):
+    f = getattr(ur5e, fn)
+    with pytest.raises(ValueError, match=r"%s: argument 'q' must have shape \(6,\) or \(N, 6\), got \(7,\)" % fn):
+        f(np.zeros(7), Q, Q)
+    with pytest.raises(ValueError, match=r"%s: argument 'v' must have shape \(4, 6\) like 'q', got \(6,\)" % fn):
+        f(np.zeros((4, 6)), Q, np.zeros((4, 6)))
+    with pytest.raises(ValueError, match=r"%s: argument '%s' must have shape \(6,\) or \(N, 6\), got \(2, 5\)" % (fn, third)):
+        f(np.zeros((2, 6)), np.zeros((2, 6)), np.zeros((2, 5)))
+    with pytest.raises(ValueError, match=r"%s: argument '%s' has a non-finite value at \[1\]" % (fn, third)):
+        f(Q, Q, np.array([0, np.nan, 0, 0, 0, 0]))
+    with pytest.raises(TypeError, match=r"%s: argument 'v' must have dtype float64" % fn):
+        f(Q, np.zeros(6, dtype=np.float32), Q)
+    with pytest.raises(ValueError, match=r"%s: argument 'q' must be C-contiguous" % fn):
+        f(np.zeros((2, 12))[:, ::2], np.zeros((2, 6)), np.zeros((2, 6)))
+
+
 def test_unknown_links(ur5e):
     with pytest.raises(KeyError, match="jacobian: argument 'body': unknown link 'hand'"):
         ur5e.jacobian("hand", Q)

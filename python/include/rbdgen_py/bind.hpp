@@ -12,6 +12,13 @@
 //   void forwardDynamics(Workspace &, const double * q, const double * v, const double * tau, double * a);
 //   void jacobian(Workspace &, int body, const double * q, double * J);    // 6 x nv
 //   void centerOfMass(Workspace &, const double * q, double * c);          // 3
+//   bool hasDerivatives(); std::string noDerivativesReason();  (when false the two below are not called)
+//   void inverseDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * a,
+//                                   double * dtauDq, double * dtauDv);     // nv x nv each
+//   void forwardDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * tau,
+//                                   double * a, double * daDq, double * daDv, double * Minv);  // nv, nv x nv
+// Derivatives with respect to q are taken in the tangent space (size nv: q ⊕ ε e_m moves joint j of
+// dof m by its motion subspace S_m; for a free joint [dw; dv] in the child frame, like v).
 #include <array>
 #include <memory>
 #include <optional>
@@ -44,38 +51,64 @@ public:
     return *single_;
   }
 
-  /// Evaluate f(ws, inputs, out) on each state of `in` (all checked, same batch size) into a new
-  /// array of shape itemShape (prefixed by N for a batch).
-  template<std::size_t K, class F>
-  py::array run(const char * fn, const std::array<Input, K> & in, const std::array<py::ssize_t, K> & width,
-                std::vector<py::ssize_t> itemShape, int threads, F && f)
+  /// Evaluate f(ws, inputs, outputs) on each state of `in` (all checked, same batch size) into M
+  /// new arrays, output m of shape itemShapes[m] (prefixed by N for a batch).
+  template<std::size_t K, std::size_t M, class F>
+  std::array<py::array_t<double>, M> runMany(const char * fn, const std::array<Input, K> & in,
+                                             const std::array<py::ssize_t, K> & width,
+                                             std::array<std::vector<py::ssize_t>, M> itemShapes, int threads, F && f)
   {
     if(threads < 1) throw py::value_error(std::string(fn) + ": threads must be >= 1, got " + std::to_string(threads));
-    py::ssize_t itemSize = 1;
-    for(py::ssize_t d : itemShape) itemSize *= d;
-    if(in[0].batch) itemShape.insert(itemShape.begin(), in[0].rows);
-    py::array_t<double> out(itemShape);
-    double * o = out.mutable_data();
+    std::array<py::array_t<double>, M> out;
+    std::array<double *, M> o;
+    std::array<py::ssize_t, M> itemSize;
+    for(std::size_t m = 0; m < M; ++m)
+    {
+      itemSize[m] = 1;
+      for(py::ssize_t d : itemShapes[m]) itemSize[m] *= d;
+      if(in[0].batch) itemShapes[m].insert(itemShapes[m].begin(), in[0].rows);
+      out[m] = py::array_t<double>(itemShapes[m]);
+      o[m] = out[m].mutable_data();
+    }
     auto one = [&](Workspace & ws, std::ptrdiff_t i) {
       std::array<const double *, K> p;
       for(std::size_t k = 0; k < K; ++k) p[k] = in[k].data + i * width[k];
-      f(ws, p, o + i * itemSize);
+      std::array<double *, M> r;
+      for(std::size_t m = 0; m < M; ++m) r[m] = o[m] + i * itemSize[m];
+      f(ws, p, r);
     };
     try
     {
       if(!in[0].batch) one(single(), 0);
       else
       {
-        const Model & m = *model_;
+        const Model & md = *model_;
         py::gil_scoped_release release;
-        parallelFor(in[0].rows, threads, [&m] { return m.makeWorkspace(); }, one);
+        parallelFor(in[0].rows, threads, [&md] { return md.makeWorkspace(); }, one);
       }
     }
     catch(const std::exception & e)
     {
       throw std::runtime_error(std::string(fn) + ": " + e.what());
     }
-    return std::move(out);
+    return out;
+  }
+
+  /// runMany with one output: f(ws, inputs, out).
+  template<std::size_t K, class F>
+  py::array run(const char * fn, const std::array<Input, K> & in, const std::array<py::ssize_t, K> & width,
+                std::vector<py::ssize_t> itemShape, int threads, F && f)
+  {
+    auto out = runMany<K, 1>(fn, in, width, {std::move(itemShape)}, threads,
+                             [&f](auto & ws, const auto & p, const std::array<double *, 1> & o) { f(ws, p, o[0]); });
+    return std::move(out[0]);
+  }
+
+  void requireDerivatives(const char * fn) const
+  {
+    if(!model_->hasDerivatives())
+      throw std::runtime_error(std::string(fn) + ": not available for '" + model_->name() + "' (" + model_->noDerivativesReason()
+                               + ")");
   }
 
   /// Body index from a link name (KeyError) or an index (IndexError).
@@ -133,6 +166,9 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
                              "URDF links in body order (forward_kinematics' first axis)")
       .def_property_readonly("has_forward_dynamics", [](const R & r) { return r.model().hasForwardDynamics(); },
                              "false when the mass matrix is singular (forward_dynamics then raises RuntimeError)")
+      .def_property_readonly("has_derivatives", [](const R & r) { return r.model().hasDerivatives(); },
+                             "whether inverse_dynamics_derivatives and forward_dynamics_derivatives are available "
+                             "(not for a scene with contacts, nor for rbdgen.compile(..., derivatives=False))")
       .def("__repr__", [name](const R & r) {
         return std::string("<rbdgen.") + name + " '" + r.model().name() + "' nq=" + std::to_string(r.model().nq())
                + " nv=" + std::to_string(r.model().nv()) + ">";
@@ -194,6 +230,58 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
       },
       py::arg("q"), py::arg("v"), py::arg("tau"), py::kw_only(), py::arg("threads") = 1,
       doc("Joint accelerations a (nv,) = H(q)^-1 (tau - C(q, v)), gravity included.").c_str());
+
+  cls.def(
+      "inverse_dynamics_derivatives",
+      [](R & r, const py::object & q, const py::object & v, const py::object & a, int threads) {
+        const Model & md = r.model();
+        r.requireDerivatives("inverse_dynamics_derivatives");
+        const std::array<Input, 3> in{checkInput("inverse_dynamics_derivatives", "q", q, md.nq()),
+                                      checkInput("inverse_dynamics_derivatives", "v", v, md.nv()),
+                                      checkInput("inverse_dynamics_derivatives", "a", a, md.nv())};
+        checkSameBatch("inverse_dynamics_derivatives", "q", in[0], "v", in[1], md.nv());
+        checkSameBatch("inverse_dynamics_derivatives", "q", in[0], "a", in[2], md.nv());
+        const py::ssize_t n = md.nv();
+        auto out = r.template runMany<3, 2>(
+            "inverse_dynamics_derivatives", in, {md.nq(), n, n}, {{{n, n}, {n, n}}}, threads,
+            [&md](auto & ws, const auto & p, const auto & o) {
+              md.inverseDynamicsDerivatives(ws, p[0], p[1], p[2], o[0], o[1]);
+            });
+        return py::make_tuple(std::move(out[0]), std::move(out[1]));
+      },
+      py::arg("q"), py::arg("v"), py::arg("a"), py::kw_only(), py::arg("threads") = 1,
+      doc("Derivatives of inverse_dynamics at (q, v, a): a tuple (dtau_dq, dtau_dv), each (nv, nv) (row: "
+          "torque, column: coordinate), (N, nv, nv) for a batch; dtau/da is mass_matrix(q). d/dq is taken in the "
+          "tangent space (nv columns): column m moves joint j of dof m by its motion subspace, for a free joint "
+          "[dw; dv] in the child frame (the coordinates of v).")
+          .c_str());
+
+  cls.def(
+      "forward_dynamics_derivatives",
+      [](R & r, const py::object & q, const py::object & v, const py::object & tau, int threads) {
+        const Model & md = r.model();
+        r.requireDerivatives("forward_dynamics_derivatives");
+        if(!md.hasForwardDynamics())
+          throw std::runtime_error("forward_dynamics_derivatives: the mass matrix of '" + md.name()
+                                   + "' is singular (joints moving only massless links): no forward dynamics");
+        const std::array<Input, 3> in{checkInput("forward_dynamics_derivatives", "q", q, md.nq()),
+                                      checkInput("forward_dynamics_derivatives", "v", v, md.nv()),
+                                      checkInput("forward_dynamics_derivatives", "tau", tau, md.nv())};
+        checkSameBatch("forward_dynamics_derivatives", "q", in[0], "v", in[1], md.nv());
+        checkSameBatch("forward_dynamics_derivatives", "q", in[0], "tau", in[2], md.nv());
+        const py::ssize_t n = md.nv();
+        auto out = r.template runMany<3, 4>(
+            "forward_dynamics_derivatives", in, {md.nq(), n, n}, {{{n}, {n, n}, {n, n}, {n, n}}}, threads,
+            [&md](auto & ws, const auto & p, const auto & o) {
+              md.forwardDynamicsDerivatives(ws, p[0], p[1], p[2], o[0], o[1], o[2], o[3]);
+            });
+        return py::make_tuple(std::move(out[0]), std::move(out[1]), std::move(out[2]), std::move(out[3]));
+      },
+      py::arg("q"), py::arg("v"), py::arg("tau"), py::kw_only(), py::arg("threads") = 1,
+      doc("Forward dynamics and its derivatives at (q, v, tau): a tuple (a, da_dq, da_dv, Minv), a = "
+          "forward_dynamics(q, v, tau) (nv,), the others (nv, nv); Minv = mass_matrix(q)^-1 = da/dtau; with a batch "
+          "(N, nv) and (N, nv, nv). d/dq in the tangent space, as inverse_dynamics_derivatives.")
+          .c_str());
 
   cls.def(
       "jacobian",

@@ -28,6 +28,7 @@ def test_installed_package(tmp_path):
         print(r.nv, float(r.mass_matrix(np.zeros(r.nq))[0, 0]))
     """)
     env = dict(os.environ, PYTHONPATH=str(site))
-    out = subprocess.run([sys.executable, "-c", script, str(site), str(ROBOTS / "pendulum.urdf")], env=env, check=True,
-                         capture_output=True, text=True).stdout.split()
+    # (cwd: not ctest's, build/python, whose rbdgen python -c would import first)
+    out = subprocess.run([sys.executable, "-c", script, str(site), str(ROBOTS / "pendulum.urdf")], env=env,
+                         cwd=tmp_path, check=True, capture_output=True, text=True).stdout.split()
     assert out[0] == "1" and abs(float(out[1]) - (1 + 4e-5)) < 1e-12

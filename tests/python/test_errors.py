@@ -28,8 +28,11 @@ Q = np.zeros(6)
 def test_bad_q_raises_value_error(ur5e, bad, message):
     with pytest.raises(ValueError, match=message):
         ur5e.mass_matrix(bad)
+    other = np.zeros(bad.shape[:-1] + (6,)) if bad.ndim in (1, 2) else Q  # v, a: the batch of bad
     with pytest.raises(ValueError, match=message):
-        ur5e.inverse_dynamics(bad, Q, Q)
+        ur5e.inverse_dynamics(bad, other, other)
+    with pytest.raises(ValueError, match=message.replace("'q'", "'a'")):
+        ur5e.inverse_dynamics(other, other, bad)
 
 
 @pytest.mark.parametrize("dtype", [np.float32, np.int64, np.complex128, ">f8"])
@@ -118,3 +121,14 @@ def test_results_are_new_arrays(ur5e):
     H1[:] = 0
     assert np.any(H2 != 0)
     assert H2.flags.c_contiguous and H2.dtype == np.float64 and H2.flags.owndata
+
+
+def test_non_finite_values_of_a_threaded_batch_name_the_first_bad_state(ur5e):
+    """A batch's values are checked state by state in the worker threads: the lowest bad state is named."""
+    zeros, v = np.zeros((1000, 6)), np.zeros((1000, 6))
+    v[700, 3], v[300, 1] = np.inf, np.nan
+    for threads in (1, 2, 7):
+        with pytest.raises(ValueError, match=r"inverse_dynamics: argument 'v' has a non-finite value at \[300, 1\]"):
+            ur5e.inverse_dynamics(zeros, v, zeros, threads=threads)
+        with pytest.raises(ValueError, match=r"forward_dynamics_derivatives: argument 'v' has a non-finite value at \[300, 1\]"):
+            ur5e.forward_dynamics_derivatives(zeros, v, zeros, threads=threads)

@@ -5,8 +5,11 @@
 // C-contiguous and aligned, otherwise TypeError (dtype) or ValueError (layout); nothing is copied
 // into another layout behind the caller's back. A Python list or tuple is converted explicitly by
 // numpy.asarray(x, dtype=float64) (a new array: lists have no layout to preserve). Every value must
-// be finite (ValueError naming the argument and the first bad index). Shapes are checked against
-// the robot (ValueError naming the argument and the expected shape).
+// be finite (ValueError naming the argument and the first bad index): a single state is scanned
+// here, a batch state by state just before the state is evaluated (Robot::runMany, in the worker
+// threads, on data about to be read anyway: a separate pass over a large batch would cost a few
+// per cent of a batched call). Shapes are checked against the robot (ValueError naming the
+// argument and the expected shape).
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -30,6 +33,8 @@ struct Input
   const double * data = nullptr;
   py::ssize_t rows = 1;
   bool batch = false;
+  const char * name = ""; ///< the argument's name
+  bool scanned = false;   ///< finiteness checked (single states); a batch is checked state by state
 };
 
 inline std::string shapeText(const py::array & a)
@@ -55,7 +60,19 @@ inline bool allFinite(const double * x, py::ssize_t n)
   return bad == 0;
 }
 
-/// Check `obj` (argument `name` of `fn`) as one state of size n or a batch (N, n).
+/// "fn: argument 'name' has a non-finite value at [i, j]" (or [j] for a single state) for the first
+/// non-finite value of row `row` (n values at x) of `in`; empty when there is none.
+inline std::string nonFiniteMessage(const char * fn, const Input & in, py::ssize_t row, const double * x, py::ssize_t n)
+{
+  for(py::ssize_t k = 0; k < n; ++k)
+    if(!std::isfinite(x[k]))
+      return std::string(fn) + ": argument '" + in.name + "' has a non-finite value at "
+             + (in.batch ? "[" + std::to_string(row) + ", " + std::to_string(k) + "]" : "[" + std::to_string(k) + "]");
+  return {};
+}
+
+/// Check `obj` (argument `name` of `fn`) as one state of size n or a batch (N, n); the values of a
+/// batch are checked later, state by state (Input::scanned).
 inline Input checkInput(const char * fn, const char * name, const py::object & obj, py::ssize_t n)
 {
   const auto where = [fn, name] { return std::string(fn) + ": argument '" + name + "'"; }; // errors only
@@ -81,14 +98,12 @@ inline Input checkInput(const char * fn, const char * name, const py::object & o
   in.batch = a.ndim() == 2;
   in.rows = in.batch ? a.shape(0) : 1;
   in.data = static_cast<const double *>(a.data());
-  const py::ssize_t total = allFinite(in.data, in.rows * n) ? 0 : in.rows * n; // then find the first bad value
-  for(py::ssize_t k = 0; k < total; ++k)
-    if(!std::isfinite(in.data[k]))
-    {
-      const std::string index = in.batch ? "[" + std::to_string(k / n) + ", " + std::to_string(k % n) + "]"
-                                         : "[" + std::to_string(k) + "]";
-      throw py::value_error(where() + " has a non-finite value at " + index);
-    }
+  in.name = name;
+  if(!in.batch)
+  {
+    if(!allFinite(in.data, n)) throw py::value_error(nonFiniteMessage(fn, in, 0, in.data, n));
+    in.scanned = true;
+  }
   in.array = std::move(a);
   return in;
 }

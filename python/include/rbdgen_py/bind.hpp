@@ -72,7 +72,12 @@ public:
     }
     auto one = [&](Workspace & ws, std::ptrdiff_t i) {
       std::array<const double *, K> p;
-      for(std::size_t k = 0; k < K; ++k) p[k] = in[k].data + i * width[k];
+      for(std::size_t k = 0; k < K; ++k)
+      {
+        p[k] = in[k].data + i * width[k];
+        if(!in[k].scanned && !allFinite(p[k], width[k])) // a batch: this state's values, about to be read
+          throw InputError(nonFiniteMessage(fn, in[k], i, p[k], width[k]));
+      }
       std::array<double *, M> r;
       for(std::size_t m = 0; m < M; ++m) r[m] = o[m] + i * itemSize[m];
       f(ws, p, r);
@@ -86,6 +91,10 @@ public:
         py::gil_scoped_release release;
         parallelFor(in[0].rows, threads, [&md] { return md.makeWorkspace(); }, one);
       }
+    }
+    catch(const InputError & e)
+    {
+      throw py::value_error(e.what());
     }
     catch(const std::exception & e)
     {

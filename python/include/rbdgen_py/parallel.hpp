@@ -2,7 +2,8 @@
 // Batches over threads: the N states are cut into `threads` contiguous chunks, each run by one
 // std::thread with its own workspace, in state order. A state's result depends only on its inputs,
 // so the output is bitwise the same for every thread count. The first failure (lowest state index)
-// is rethrown after every thread has joined, with the state index in the message.
+// is rethrown after every thread has joined, with the state index in the message (an InputError
+// as it is: its message names the input and the state).
 #include <algorithm>
 #include <cstddef>
 #include <exception>
@@ -20,6 +21,13 @@ class StateError : public std::runtime_error
 {
 public:
   using std::runtime_error::runtime_error;
+};
+
+/// Thrown for a bad input of one state, with a complete message: rethrown as is (the lowest state's).
+class InputError : public std::invalid_argument
+{
+public:
+  using std::invalid_argument::invalid_argument;
 };
 
 /// At most this many threads per call (more would only add start-up cost; results do not depend on it).
@@ -69,6 +77,10 @@ void parallelFor(std::ptrdiff_t n, int threads, MakeWorkspace && makeWorkspace, 
       try
       {
         std::rethrow_exception(errors[t]);
+      }
+      catch(const InputError &)
+      {
+        throw;
       }
       catch(const std::exception & e)
       {

@@ -132,3 +132,11 @@ def test_non_finite_values_of_a_threaded_batch_name_the_first_bad_state(ur5e):
             ur5e.inverse_dynamics(zeros, v, zeros, threads=threads)
         with pytest.raises(ValueError, match=r"forward_dynamics_derivatives: argument 'v' has a non-finite value at \[300, 1\]"):
             ur5e.forward_dynamics_derivatives(zeros, v, zeros, threads=threads)
+    # the lowest state first, then the first argument: v of state 63 before q of state 64 (another block)
+    q = np.zeros((1000, 6))
+    q[64, 0], v[63, 5] = np.nan, np.inf
+    with pytest.raises(ValueError, match=r"inverse_dynamics: argument 'v' has a non-finite value at \[63, 5\]"):
+        ur5e.inverse_dynamics(q, v, zeros, threads=2)
+    q[63, 2] = -np.inf
+    with pytest.raises(ValueError, match=r"inverse_dynamics: argument 'q' has a non-finite value at \[63, 2\]"):
+        ur5e.inverse_dynamics(q, v, zeros, threads=2)

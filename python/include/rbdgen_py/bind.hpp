@@ -19,6 +19,7 @@
 //                                   double * a, double * daDq, double * daDv, double * Minv);  // nv, nv x nv
 // Derivatives with respect to q are taken in the tangent space (size nv: q ⊕ ε e_m moves joint j of
 // dof m by its motion subspace S_m; for a free joint [dw; dv] in the child frame, like v).
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <optional>
@@ -72,24 +73,34 @@ public:
     }
     auto one = [&](Workspace & ws, std::ptrdiff_t i) {
       std::array<const double *, K> p;
-      for(std::size_t k = 0; k < K; ++k)
-      {
-        p[k] = in[k].data + i * width[k];
-        if(!in[k].scanned && !allFinite(p[k], width[k])) // a batch: this state's values, about to be read
-          throw InputError(nonFiniteMessage(fn, in[k], i, p[k], width[k]));
-      }
+      for(std::size_t k = 0; k < K; ++k) p[k] = in[k].data + i * width[k];
       std::array<double *, M> r;
       for(std::size_t m = 0; m < M; ++m) r[m] = o[m] + i * itemSize[m];
       f(ws, p, r);
     };
     try
     {
-      if(!in[0].batch) one(single(), 0);
+      if(!in[0].batch) one(single(), 0); // (its values were checked by checkInput)
       else
       {
         const Model & md = *model_;
+        const std::ptrdiff_t rows = in[0].rows;
+        struct Scratch
+        {
+          Workspace ws;
+          std::ptrdiff_t checkedEnd; ///< states [.., checkedEnd) have finite inputs
+        };
         py::gil_scoped_release release;
-        parallelFor(in[0].rows, threads, [&md] { return md.makeWorkspace(); }, one);
+        parallelFor(
+            rows, threads, [&md] { return Scratch{md.makeWorkspace(), 0}; },
+            [&](Scratch & s, std::ptrdiff_t i) {
+              if(i >= s.checkedEnd) // the next block of states: its values, about to be read, are checked first
+              {
+                s.checkedEnd = std::min<std::ptrdiff_t>(rows, i + kScanBlock);
+                checkFinite(fn, in, width, i, s.checkedEnd);
+              }
+              one(s.ws, i);
+            });
       }
     }
     catch(const InputError & e)
@@ -101,6 +112,21 @@ public:
       throw std::runtime_error(std::string(fn) + ": " + e.what());
     }
     return out;
+  }
+
+  /// Inputs of states [begin, end) of a batch are finite, else InputError for the first bad state
+  /// (then the first bad argument, the first bad value).
+  template<std::size_t K>
+  static void checkFinite(const char * fn, const std::array<Input, K> & in, const std::array<py::ssize_t, K> & width,
+                          std::ptrdiff_t begin, std::ptrdiff_t end)
+  {
+    bool ok = true;
+    for(std::size_t k = 0; k < K; ++k) ok = ok && allFinite(in[k].data + begin * width[k], (end - begin) * width[k]);
+    if(ok) return;
+    for(std::ptrdiff_t i = begin; i < end; ++i)
+      for(std::size_t k = 0; k < K; ++k)
+        if(!allFinite(in[k].data + i * width[k], width[k]))
+          throw InputError(nonFiniteMessage(fn, in[k], i, in[k].data + i * width[k], width[k]));
   }
 
   /// runMany with one output: f(ws, inputs, out).

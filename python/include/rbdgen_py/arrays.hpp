@@ -10,7 +10,8 @@
 // (Robot::runMany, in the worker threads, on data about to be read anyway: a separate pass over a
 // large batch would cost a few per cent of a batched call). Shapes are checked against the robot (ValueError naming the
 // argument and the expected shape).
-#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <string>
 
 #include <Eigen/Core>
@@ -44,11 +45,23 @@ inline std::string shapeText(const py::array & a)
 inline std::string expectedText(py::ssize_t n) { return "(" + std::to_string(n) + ",) or (N, " + std::to_string(n) + ")"; }
 
 /// No NaN or infinity in x[0, n): x * 0 is 0 for every finite x and NaN otherwise, so the sum of
-/// x * 0 is 0 exactly when all are finite (IEEE arithmetic: rbdgen is never built with
-/// -ffast-math). Eigen's sum is vectorised whatever the optimisation level.
+/// x * 0 is 0 exactly when all are finite (Eigen's sum is vectorised whatever the optimisation
+/// level). Under -ffinite-math-only (-ffast-math: a downstream PYTHON_MODULE build may use it)
+/// the compiler may assume that away: the exponent bits are tested instead.
 inline bool allFinite(const double * x, py::ssize_t n)
 {
+#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
+  std::uint64_t bad = 0;
+  for(py::ssize_t k = 0; k < n; ++k)
+  {
+    std::uint64_t bits;
+    std::memcpy(&bits, x + k, sizeof bits);
+    bad |= static_cast<std::uint64_t>((bits & 0x7ff0000000000000ULL) == 0x7ff0000000000000ULL);
+  }
+  return bad == 0;
+#else
   return (Eigen::Map<const Eigen::ArrayXd>(x, static_cast<Eigen::Index>(n)) * 0.0).sum() == 0.0;
+#endif
 }
 
 /// "fn: argument 'name' has a non-finite value at [i, j]" (or [j] for a single state) for the first
@@ -56,7 +69,7 @@ inline bool allFinite(const double * x, py::ssize_t n)
 inline std::string nonFiniteMessage(const char * fn, const Input & in, py::ssize_t row, const double * x, py::ssize_t n)
 {
   for(py::ssize_t k = 0; k < n; ++k)
-    if(!std::isfinite(x[k]))
+    if(!allFinite(x + k, 1))
       return std::string(fn) + ": argument '" + in.name + "' has a non-finite value at "
              + (in.batch ? "[" + std::to_string(row) + ", " + std::to_string(k) + "]" : "[" + std::to_string(k) + "]");
   return {};

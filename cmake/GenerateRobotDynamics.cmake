@@ -159,9 +159,9 @@ function(_rbdgen_python_module target module header ns robot_name)
   set(template "${RBDGEN_PYTHON_PACKAGE_DIR}/module_template.cpp")
   if(NOT RBDGEN_PYTHON_PACKAGE_DIR OR (NOT EXISTS "${template}" AND NOT TARGET rbdgen_python))
     message(FATAL_ERROR "generate_robot_dynamics(${target}): PYTHON_MODULE needs rbdgen's Python package "
-                        "(module template and headers): rbdgen was built without it, or installed without its "
-                        "component 'python' (cmake --install BUILD --component python); looked in "
-                        "'${RBDGEN_PYTHON_PACKAGE_DIR}'")
+                        "(its module template and headers): install rbdgen's component 'python' into the same "
+                        "prefix (cmake --install BUILD --component python, from a build with the package); "
+                        "looked for '${template}'")
   endif()
   get_filename_component(outdir "${header}" DIRECTORY)
   get_filename_component(outdir "${outdir}" DIRECTORY)

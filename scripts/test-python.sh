@@ -3,9 +3,12 @@
 # python_tests: pytest on tests/python). The sanitized build of scripts/test.sh cannot test it: an
 # ASan-instrumented extension does not load into an uninstrumented python3 without LD_PRELOAD, so
 # that build leaves the package out (RBDGEN_BUILD_PYTHON defaults to OFF with -fsanitize).
-# Only the package's target and the rbdgen executable are built (runtime, loader, scene, generator
-# library, the extension; the executable for test_cmake_module, which installs this build and makes
-# a Python module with generate_robot_dynamics(... PYTHON_MODULE) downstream).
+# Only the package's target is built (runtime, loader, scene, generator library, the extension).
+# tests/python/test_cmake_module.py makes a Python module with generate_robot_dynamics(...
+# PYTHON_MODULE) in a downstream project, against a prefix holding rbdgen (with its rbdgen
+# executable) and this build's package: rbdgen is installed from RBDGEN_TEST_GENERATOR_BUILD when
+# set (scripts/test.sh: its sanitized build, whose executable is built anyway), else from this
+# build, which then also builds the executable (a few minutes more).
 # Usage: scripts/test-python.sh [BUILD_DIR]   (default: build-python)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -14,7 +17,11 @@ jobs="${RBDGEN_JOBS:-$(nproc)}"
 
 start=$SECONDS
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRBDGEN_BUILD_TESTS=ON -DRBDGEN_BUILD_PYTHON=ON
-cmake --build "$build" --target rbdgen_python rbdgen --parallel "$jobs"
+targets=(rbdgen_python)
+if [[ -z "${RBDGEN_TEST_GENERATOR_BUILD:-}" ]]; then
+  targets+=(rbdgen)
+fi
+cmake --build "$build" --target "${targets[@]}" --parallel "$jobs"
 echo "=== test-python: package built in $((SECONDS - start)) s ==="
 start=$SECONDS
 ctest --test-dir "$build" -R '^python_tests$' --output-on-failure --timeout 600

@@ -28,7 +28,7 @@ namespace py = pybind11;
 /// the caller passed a batch. `array` keeps the data alive.
 struct Input
 {
-  py::array array;
+  py::object array; ///< (not py::array, whose default constructor makes an empty numpy array)
   const double * data = nullptr;
   py::ssize_t rows = 1;
   bool batch = false;
@@ -83,15 +83,17 @@ inline constexpr py::ssize_t kScanBlock = 64;
 inline Input checkInput(const char * fn, const char * name, const py::object & obj, py::ssize_t n)
 {
   const auto where = [fn, name] { return std::string(fn) + ": argument '" + name + "'"; }; // errors only
-  py::array a;
-  if(py::isinstance<py::array>(obj)) a = py::reinterpret_borrow<py::array>(obj);
-  else if(py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj))
-    a = py::module_::import("numpy").attr("asarray")(obj, py::arg("dtype") = "float64");
-  else
+  const py::array a = [&]() -> py::array {
+    if(py::isinstance<py::array>(obj)) return py::reinterpret_borrow<py::array>(obj);
+    if(py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj))
+      return py::module_::import("numpy").attr("asarray")(obj, py::arg("dtype") = "float64");
     throw py::type_error(where() + " must be a float64 numpy array of shape " + expectedText(n) + ", got "
                          + std::string(py::str(py::type::of(obj).attr("__name__"))));
-  if(!py::detail::npy_api::get().PyArray_EquivTypes_(a.dtype().ptr(), py::dtype::of<double>().ptr()))
-    throw py::type_error(where() + " must have dtype float64 (native byte order), got " + std::string(py::str(a.dtype()))
+  }();
+  static const py::handle float64 = py::dtype::of<double>().release(); // numpy's float64 (kept for good)
+  const py::dtype dtype = a.dtype();
+  if(dtype.ptr() != float64.ptr() && !py::detail::npy_api::get().PyArray_EquivTypes_(dtype.ptr(), float64.ptr()))
+    throw py::type_error(where() + " must have dtype float64 (native byte order), got " + std::string(py::str(py::handle(dtype)))
                          + "; convert with numpy.asarray(" + name + ", dtype=numpy.float64)");
   if(a.ndim() != 1 && a.ndim() != 2)
     throw py::value_error(where() + " must have shape " + expectedText(n) + ", got " + shapeText(a));
@@ -123,7 +125,7 @@ inline void checkSameBatch(const char * fn, const char * first, const Input & a,
     const std::string expected = a.batch ? "(" + std::to_string(a.rows) + ", " + std::to_string(n) + ")"
                                          : "(" + std::to_string(n) + ",)";
     throw py::value_error(std::string(fn) + ": argument '" + name + "' must have shape " + expected + " like '" + first
-                          + "', got " + shapeText(b.array));
+                          + "', got " + shapeText(py::reinterpret_borrow<py::array>(b.array)));
   }
 }
 

@@ -55,12 +55,12 @@ public:
   /// Evaluate f(ws, inputs, outputs) on each state of `in` (all checked, same batch size) into M
   /// new arrays, output m of shape itemShapes[m] (prefixed by N for a batch).
   template<std::size_t K, std::size_t M, class F>
-  std::array<py::array_t<double>, M> runMany(const char * fn, const std::array<Input, K> & in,
-                                             const std::array<py::ssize_t, K> & width,
-                                             std::array<std::vector<py::ssize_t>, M> itemShapes, int threads, F && f)
+  std::array<py::object, M> runMany(const char * fn, const std::array<Input, K> & in,
+                                    const std::array<py::ssize_t, K> & width,
+                                    std::array<std::vector<py::ssize_t>, M> itemShapes, int threads, F && f)
   {
     if(threads < 1) throw py::value_error(std::string(fn) + ": threads must be >= 1, got " + std::to_string(threads));
-    std::array<py::array_t<double>, M> out;
+    std::array<py::object, M> out; // (py::array's default constructor would make an empty numpy array)
     std::array<double *, M> o;
     std::array<py::ssize_t, M> itemSize;
     for(std::size_t m = 0; m < M; ++m)
@@ -68,8 +68,9 @@ public:
       itemSize[m] = 1;
       for(py::ssize_t d : itemShapes[m]) itemSize[m] *= d;
       if(in[0].batch) itemShapes[m].insert(itemShapes[m].begin(), in[0].rows);
-      out[m] = py::array_t<double>(itemShapes[m]);
-      o[m] = out[m].mutable_data();
+      py::array_t<double> a(itemShapes[m]);
+      o[m] = a.mutable_data();
+      out[m] = std::move(a);
     }
     auto one = [&](Workspace & ws, std::ptrdiff_t i) {
       std::array<const double *, K> p;
@@ -131,7 +132,7 @@ public:
 
   /// runMany with one output: f(ws, inputs, out).
   template<std::size_t K, class F>
-  py::array run(const char * fn, const std::array<Input, K> & in, const std::array<py::ssize_t, K> & width,
+  py::object run(const char * fn, const std::array<Input, K> & in, const std::array<py::ssize_t, K> & width,
                 std::vector<py::ssize_t> itemShape, int threads, F && f)
   {
     auto out = runMany<K, 1>(fn, in, width, {std::move(itemShape)}, threads,

@@ -133,7 +133,7 @@ public:
   /// runMany with one output: f(ws, inputs, out).
   template<std::size_t K, class F>
   py::object run(const char * fn, const std::array<Input, K> & in, const std::array<py::ssize_t, K> & width,
-                std::vector<py::ssize_t> itemShape, int threads, F && f)
+                 std::vector<py::ssize_t> itemShape, int threads, F && f)
   {
     auto out = runMany<K, 1>(fn, in, width, {std::move(itemShape)}, threads,
                              [&f](auto & ws, const auto & p, const std::array<double *, 1> & o) { f(ws, p, o[0]); });

@@ -3,7 +3,8 @@
 //  - UrdfModel: a URDF loaded by the loader, evaluated by rbd:: algorithms (double), one
 //    MultiBodyConfig + algorithm objects per thread (Workspace);
 //  - SceneModel: a scene's robot evaluated by rbd::scene::SceneDynamics (its gravity, damping,
-//    friction, armature, contacts; no external wrenches), reentrant, so its Workspace is empty.
+//    friction, armature, contacts; no external wrenches; derivatives included), reentrant, so its
+//    Workspace is empty.
 // Poses and Jacobians are those of the URDF link frames (= the MultiBody body frames except for
 // bodies moved by backward joints, see ParserResult::bodyBaseTransforms), as in the generated code.
 #include <memory>
@@ -101,9 +102,9 @@ public:
   void forwardDynamics(Workspace &, const double * q, const double * v, const double * tau, double * a) const;
   void jacobian(Workspace &, int body, const double * q, double * J) const;
   void centerOfMass(Workspace &, const double * q, double * c) const;
-  /// Not for a scene with contacts (SceneDynamics does not provide them).
-  bool hasDerivatives() const { return dyn_->scene().contacts.empty(); }
-  std::string noDerivativesReason() const { return "the derivatives of a scene with contacts are not provided"; }
+  /// Every effect of the scene, contacts included (SceneDynamics::inverseDynamicsDerivatives).
+  bool hasDerivatives() const { return true; }
+  std::string noDerivativesReason() const { return {}; }
   void inverseDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * a, double * dtauDq,
                                   double * dtauDv) const;
   void forwardDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * tau, double * a,

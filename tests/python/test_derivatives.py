@@ -46,11 +46,11 @@ def step(q, m, eps, floating):
     return q
 
 
-def differences(f, x0, nv, move):
+def differences(f, x0, nv, move, h=H):
     """Columns d f(move(x0, m, eps)) / d eps at 0 for m < nv, by 4th-order central differences; f is
     evaluated once on the batch of every perturbed x."""
-    offsets = (2 * H, H, -H, -2 * H)
-    weights = np.array([-1, 8, -8, 1]) / (12 * H)
+    offsets = (2 * h, h, -h, -2 * h)
+    weights = np.array([-1, 8, -8, 1]) / (12 * h)
     xs = np.array([move(x0, m, e) for m in range(nv) for e in offsets])
     fx = f(xs).reshape(nv, len(offsets), -1)
     return np.einsum("k,mki->im", weights, fx)
@@ -144,13 +144,25 @@ def test_scene_derivatives_include_its_damping():
     assert rel_err(Minv, np.linalg.inv(scene.mass_matrix(q))) < 1e-14
 
 
-def test_scene_with_contacts_has_no_derivatives():
+def test_scene_derivatives_with_contacts_are_differences():
+    """quadruped_standing lowered 17 mm: its four feet 6.5 mm into the compliant ground (no contact
+    boundary within the differences' steps), slipping (regularised Coulomb friction), with joint
+    damping, friction and armature; derivatives against differences of the scene's forward dynamics."""
     scene = rbdgen.Robot.from_scene(SCENES / "quadruped_standing.xml")
-    assert not scene.has_derivatives
-    q = np.zeros(scene.nq)
-    q[0] = 1.0
-    v = np.zeros(scene.nv)
-    with pytest.raises(RuntimeError, match="inverse_dynamics_derivatives: not available .*contacts"):
-        scene.inverse_dynamics_derivatives(q, v, v)
-    with pytest.raises(RuntimeError, match="forward_dynamics_derivatives: not available .*contacts"):
-        scene.forward_dynamics_derivatives(q, v, v)
+    assert scene.has_derivatives and (scene.nq, scene.nv) == (19, 18)
+    q = np.r_[1.0, 0, 0, 0, 0, 0, 0.275, [0, -0.8, 1.6] * 4]
+    rng = np.random.default_rng(15)
+    v, tau = rng.uniform(-0.5, 0.5, scene.nv), rng.uniform(-5, 5, scene.nv)
+    a, da_dq, da_dv, Minv = scene.forward_dynamics_derivatives(q, v, tau)
+    assert rel_err(a, scene.forward_dynamics(q, v, tau)) < 1e-12
+    n = scene.nv
+    ones = lambda x: np.repeat(x[None], 4 * n, axis=0)  # noqa: E731
+    h = 1e-5  # (the friction's regularisation velocity is 0.05 m/s: smaller steps than the arm's)
+    num_dq = differences(lambda qs: scene.forward_dynamics(qs, ones(v), ones(tau)), q, n,
+                         lambda x, m, e: step(x, m, e, True), h)
+    num_dv = differences(lambda vs: scene.forward_dynamics(ones(q), vs, ones(tau)), v, n, add, h)
+    assert np.abs(da_dq).max() > 1e3  # the ground's stiffness is in there
+    assert rel_err(da_dq, num_dq) < 1e-9  # seen 5e-12
+    assert rel_err(da_dv, num_dv) < 1e-9  # seen 3e-11
+    dtau_dq, dtau_dv = scene.inverse_dynamics_derivatives(q, v, a)
+    assert rel_err(da_dq, -Minv @ dtau_dq) < 1e-12

@@ -204,7 +204,7 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
                              "false when the mass matrix is singular (forward_dynamics then raises RuntimeError)")
       .def_property_readonly("has_derivatives", [](const R & r) { return r.model().hasDerivatives(); },
                              "whether inverse_dynamics_derivatives and forward_dynamics_derivatives are available "
-                             "(not for a scene with contacts, nor for rbdgen.compile(..., derivatives=False))")
+                             "(not for rbdgen.compile(..., derivatives=False))")
       .def("__repr__", [name](const R & r) {
         return std::string("<rbdgen.") + name + " '" + r.model().name() + "' nq=" + std::to_string(r.model().nq())
                + " nv=" + std::to_string(r.model().nv()) + ">";

@@ -3,7 +3,7 @@
 #   find_package(rbdgen CONFIG REQUIRED)
 #   generate_robot_dynamics(TARGET panda_dynamics URDF robots/panda.urdf
 #                           [NAMESPACE panda] [FLOATING_BASE] [BASE_LINK link] [OUTPUT_DIR dir] [STRICT]
-#                           [DERIVATIVES])
+#                           [DERIVATIVES] [PYTHON_MODULE module])
 #   generate_robot_dynamics(TARGET quadruped_sim SCENE scenes/quadruped_ground.xml
 #                           [NAMESPACE ns] [OUTPUT_DIR dir] [STRICT])
 #   target_link_libraries(my_controller PRIVATE panda_dynamics)
@@ -22,6 +22,16 @@
 # "rbdgen: warning: ..." (Ninja and Make show a custom command's output) and never fail it.
 # STRICT: the mass matrix checks are errors instead of warnings. DERIVATIVES: the header also has
 # inverse_dynamics_derivatives() and forward_dynamics_derivatives() (rbdgen generate --derivatives).
+#
+# PYTHON_MODULE module (URDF only): also a pybind11 module target `module` (`import module`;
+# module.robot() is the object of rbdgen.compile: the API of rbdgen.Robot, with the derivatives when
+# DERIVATIVES is given), built from the Python package's module template and headers (installed by
+# rbdgen's component `python`). Needs pybind11, found by the caller first:
+#   find_package(Python3 COMPONENTS Interpreter Development.Module REQUIRED)
+#   find_package(pybind11 CONFIG REQUIRED)
+#   generate_robot_dynamics(TARGET panda_dynamics URDF panda.urdf DERIVATIVES PYTHON_MODULE panda_py)
+# The module lands in the current binary directory (set its LIBRARY_OUTPUT_DIRECTORY to move it) and
+# is compiled with the project's flags (rbdgen.compile adds -O2 -march=native).
 include_guard(GLOBAL)
 
 function(_rbdgen_identifier out text)
@@ -38,7 +48,7 @@ function(_rbdgen_identifier out text)
 endfunction()
 
 function(generate_robot_dynamics)
-  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE;STRICT;DERIVATIVES" "TARGET;URDF;SCENE;NAMESPACE;BASE_LINK;OUTPUT_DIR" "")
+  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE;STRICT;DERIVATIVES" "TARGET;URDF;SCENE;NAMESPACE;BASE_LINK;OUTPUT_DIR;PYTHON_MODULE" "")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "generate_robot_dynamics: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
@@ -49,6 +59,10 @@ function(generate_robot_dynamics)
     message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): SCENE names the URDF and the base: "
                         "URDF, FLOATING_BASE and BASE_LINK cannot be given with it")
   endif()
+  if(arg_SCENE AND arg_PYTHON_MODULE)
+    message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): PYTHON_MODULE takes a URDF (a scene's header has "
+                        "another API; rbdgen.Robot.from_scene evaluates scenes from Python)")
+  endif()
   if(arg_SCENE)
     get_filename_component(input "${arg_SCENE}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
   else()
@@ -58,16 +72,22 @@ function(generate_robot_dynamics)
   if(NOT EXISTS "${input}")
     message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): '${input}' does not exist")
   endif()
+  set(robot_name "")
+  if(NOT arg_SCENE)
+    file(READ "${urdf}" text)
+    if(text MATCHES "<robot[^>]*name=\"([^\"]*)\"")
+      set(robot_name "${CMAKE_MATCH_1}")
+    endif()
+  endif()
   if(arg_NAMESPACE)
     set(ns "${arg_NAMESPACE}")
   elseif(arg_SCENE)
     _rbdgen_identifier(ns "${arg_TARGET}")
   else()
-    file(READ "${urdf}" text)
-    if(NOT text MATCHES "<robot[^>]*name=\"([^\"]*)\"")
+    if(robot_name STREQUAL "")
       message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): ${urdf}: no <robot name=...>; give NAMESPACE")
     endif()
-    _rbdgen_identifier(ns "${CMAKE_MATCH_1}")
+    _rbdgen_identifier(ns "${robot_name}")
   endif()
   if(arg_OUTPUT_DIR)
     get_filename_component(outdir "${arg_OUTPUT_DIR}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_BINARY_DIR}")
@@ -118,4 +138,44 @@ function(generate_robot_dynamics)
   target_link_libraries(${arg_TARGET} INTERFACE Eigen3::Eigen)
   target_compile_features(${arg_TARGET} INTERFACE cxx_std_17)
   set_target_properties(${arg_TARGET} PROPERTIES RBDGEN_HEADER "${header}" RBDGEN_NAMESPACE "${ns}")
+
+  if(arg_PYTHON_MODULE)
+    _rbdgen_python_module(${arg_TARGET} "${arg_PYTHON_MODULE}" "${header}" "${ns}" "${robot_name}")
+  endif()
+endfunction()
+
+# The pybind11 module `module` over the generated header of `target` (see PYTHON_MODULE above).
+# RBDGEN_PYTHON_PACKAGE_DIR: the directory of the package rbdgen (module_template.cpp, include/),
+# set by rbdgenConfig.cmake (installed tree) or by rbdgen's own python/CMakeLists.txt (build tree).
+function(_rbdgen_python_module target module header ns robot_name)
+  if(NOT module MATCHES "^[A-Za-z_][A-Za-z0-9_]*$")
+    message(FATAL_ERROR "generate_robot_dynamics(${target}): PYTHON_MODULE '${module}' is not a Python identifier")
+  endif()
+  if(NOT COMMAND pybind11_add_module)
+    message(FATAL_ERROR "generate_robot_dynamics(${target}): PYTHON_MODULE needs pybind11: call "
+                        "find_package(Python3 COMPONENTS Interpreter Development.Module REQUIRED) and "
+                        "find_package(pybind11 CONFIG REQUIRED) first (Debian: python3-dev pybind11-dev)")
+  endif()
+  set(template "${RBDGEN_PYTHON_PACKAGE_DIR}/module_template.cpp")
+  if(NOT RBDGEN_PYTHON_PACKAGE_DIR OR (NOT EXISTS "${template}" AND NOT TARGET rbdgen_python))
+    message(FATAL_ERROR "generate_robot_dynamics(${target}): PYTHON_MODULE needs rbdgen's Python package "
+                        "(its module template and headers): install rbdgen's component 'python' into the same "
+                        "prefix (cmake --install BUILD --component python, from a build with the package); "
+                        "looked for '${template}'")
+  endif()
+  get_filename_component(outdir "${header}" DIRECTORY)
+  get_filename_component(outdir "${outdir}" DIRECTORY)
+  set(source "${outdir}/${module}_module.cpp")
+  add_custom_command(OUTPUT "${source}"
+    COMMAND ${CMAKE_COMMAND} "-DHEADER=${header}" "-DTEMPLATE=${template}" "-DOUTPUT=${source}" "-DMODULE=${module}"
+            "-DNS=${ns}" "-DROBOT=${robot_name}" -P "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/RbdgenPythonModule.cmake"
+    DEPENDS "${header}" "${template}" "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/RbdgenPythonModule.cmake"
+    COMMENT "rbdgen: ${ns}/dynamics.hpp -> Python module ${module}"
+    VERBATIM)
+  pybind11_add_module(${module} MODULE "${source}")
+  target_include_directories(${module} PRIVATE "${RBDGEN_PYTHON_PACKAGE_DIR}/include")
+  target_link_libraries(${module} PRIVATE ${target})
+  if(TARGET rbdgen_python) # rbdgen's build tree: the package's files are copied there by rbdgen_python
+    add_dependencies(${module} rbdgen_python)
+  endif()
 endfunction()

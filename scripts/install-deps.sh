@@ -3,7 +3,8 @@
 set -euo pipefail
 
 packages=(g++ cmake ninja-build pkg-config libeigen3-dev liburdfdom-dev libtinyxml2-dev libfmt-dev libcli11-dev
-          libgtest-dev libgmock-dev libbenchmark-dev gnuplot-nox)
+          libgtest-dev libgmock-dev libbenchmark-dev gnuplot-nox
+          pybind11-dev python3-dev python3-numpy python3-pytest)
 packages+=("$@")
 
 missing=()

@@ -11,6 +11,8 @@
 # (RBDGEN_GENERATED_TEST_OPTIONS, RBDGEN_QUICK_TEST_OPTIONS; see tests/CMakeLists.txt).
 # The Release -O3 -march=native builds are exercised by scripts/quickstart.sh and scripts/bench.sh
 # (whose build runs the same agreement checks: ctest -R bench_agreement).
+# Then scripts/test-python.sh builds the Python package in BUILD_DIR-python (Release: an ASan
+# extension cannot be loaded into python3) and runs its pytest suite.
 # Usage: scripts/test.sh [BUILD_DIR]   (default: build-test; the fuzzer uses BUILD_DIR-fuzz)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -31,5 +33,9 @@ echo "=== test: build done in $((SECONDS - start)) s ==="
 start=$SECONDS
 ctest --test-dir "$build" --output-on-failure --parallel "$jobs" --timeout 900
 echo "=== test: every test passed under ASan + UBSan in $((SECONDS - start)) s ==="
+
+# The Python package, which an ASan build cannot load into python3: a Release build of its own.
+# (its downstream PYTHON_MODULE test takes rbdgen and its executable from this build's install)
+RBDGEN_TEST_GENERATOR_BUILD="$build" "$root/scripts/test-python.sh" "$build-python"
 
 "$root/scripts/fuzz.sh" "$build-fuzz"

@@ -1,0 +1,28 @@
+# Script mode (generate_robot_dynamics(... PYTHON_MODULE)): write the module source OUTPUT from the
+# Python package's TEMPLATE for the generated HEADER (namespace NS) of the robot ROBOT, module name
+# MODULE; the same substitutions as rbdgen.compile (python/rbdgen/_compile.py, module_source).
+cmake_minimum_required(VERSION 3.25) # (CMP0053: "@NS@" below is text, not a variable reference)
+foreach(v HEADER TEMPLATE OUTPUT MODULE NS)
+  if(NOT DEFINED ${v})
+    message(FATAL_ERROR "RbdgenPythonModule.cmake: -D${v}= is required")
+  endif()
+endforeach()
+file(READ "${HEADER}" header)
+file(READ "${TEMPLATE}" source)
+set(has_fd 0)
+if(header MATCHES "constexpr bool has_forward_dynamics = true;")
+  set(has_fd 1)
+endif()
+set(has_derivatives 0)
+if(header MATCHES "constexpr bool has_derivatives = true;")
+  set(has_derivatives 1)
+endif()
+# the robot's name as a C++ string literal
+string(REPLACE "\\" "\\\\" robot "${ROBOT}")
+string(REPLACE "\"" "\\\"" robot "${robot}")
+string(REPLACE "@MODULE@" "${MODULE}" source "${source}")
+string(REPLACE "@NS@" "${NS}" source "${source}")
+string(REPLACE "@ROBOT_STRING@" "\"${robot}\"" source "${source}")
+string(REPLACE "@HAS_FD@" "${has_fd}" source "${source}")
+string(REPLACE "@HAS_DERIVATIVES@" "${has_derivatives}" source "${source}")
+file(WRITE "${OUTPUT}" "${source}")

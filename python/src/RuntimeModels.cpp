@@ -1,0 +1,223 @@
+#include "RuntimeModels.h"
+
+#include <rbd/CoM.h>
+#include <rbd/FK.h>
+#include <rbd/FV.h>
+
+namespace rbdgen_py
+{
+
+namespace
+{
+
+using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using ConstVector = Eigen::Map<const Eigen::VectorXd>;
+
+/// Row-major 4x4 [R p; 0 1] of the sva transform X_0_link (R = E^T, p = r).
+void writePose(const sva::PTransformd & X, double * out)
+{
+  Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>> T(out);
+  T.setIdentity();
+  T.topLeftCorner<3, 3>() = X.rotation().transpose();
+  T.topRightCorner<3, 1>() = X.translation();
+}
+
+std::vector<std::string> jointDofNames(const rbd::MultiBody & mb)
+{
+  std::vector<std::string> names;
+  for(const auto & j : mb.joints())
+    for(int d = 0; d < j.dof(); ++d) names.push_back(j.name());
+  return names;
+}
+
+} // namespace
+
+// --- UrdfModel -----------------------------------------------------------------------------------
+
+UrdfModel::UrdfModel(const std::string & path, bool floatingBase, const std::string & baseLink)
+{
+  rbd::parsers::ParserOptions opt;
+  opt.fixed = !floatingBase;
+  opt.baseLink = baseLink;
+  const rbd::parsers::ParserResult r = rbd::parsers::fromUrdfFile(path, opt);
+  mb_ = r.mb;
+  name_ = r.name;
+  warnings_ = r.warnings;
+  for(const auto & b : mb_.bodies())
+  {
+    const auto it = r.bodyBaseTransforms.find(b.name());
+    X_body_link_.push_back(it == r.bodyBaseTransforms.end() ? sva::PTransformd::Identity() : it->second.inv());
+  }
+}
+
+std::vector<std::string> UrdfModel::dofNames() const { return jointDofNames(mb_); }
+
+std::vector<std::string> UrdfModel::bodyNames() const
+{
+  std::vector<std::string> names;
+  for(const auto & b : mb_.bodies()) names.push_back(b.name());
+  return names;
+}
+
+UrdfModel::Workspace UrdfModel::makeWorkspace() const
+{
+  Workspace ws{rbd::MultiBodyConfig(mb_),
+               rbd::InverseDynamics(mb_),
+               rbd::ForwardDynamics(mb_),
+               rbd::InverseDynamicsDerivatives(mb_),
+               rbd::ForwardDynamicsDerivatives(mb_),
+               {},
+               {},
+               Eigen::VectorXd::Zero(nv())};
+  ws.jacobians.resize(static_cast<std::size_t>(nbodies()));
+  return ws;
+}
+
+void UrdfModel::setState(Workspace & ws, const double * q, const double * v) const
+{
+  rbd::vectorToParam<double>(ConstVector(q, nq()), ws.mbc.q);
+  rbd::forwardKinematics(mb_, ws.mbc);
+  if(v)
+  {
+    rbd::vectorToDof<double>(ConstVector(v, nv()), ws.mbc.alpha);
+    rbd::forwardVelocity(mb_, ws.mbc);
+  }
+}
+
+void UrdfModel::forwardKinematics(Workspace & ws, const double * q, double * out) const
+{
+  setState(ws, q, nullptr);
+  for(std::size_t i = 0; i < ws.mbc.bodyPosW.size(); ++i) writePose(X_body_link_[i] * ws.mbc.bodyPosW[i], out + 16 * i);
+}
+
+void UrdfModel::inverseDynamics(Workspace & ws, const double * q, const double * v, const double * a, double * tau) const
+{
+  setState(ws, q, v);
+  rbd::vectorToDof<double>(ConstVector(a, nv()), ws.mbc.alphaD);
+  ws.id.inverseDynamics(mb_, ws.mbc);
+  rbd::dofToVector<double>(ws.mbc.jointTorque, ws.tau);
+  Eigen::Map<Eigen::VectorXd>(tau, nv()) = ws.tau;
+}
+
+void UrdfModel::massMatrix(Workspace & ws, const double * q, double * H) const
+{
+  setState(ws, q, nullptr);
+  ws.fd.computeH(mb_, ws.mbc);
+  Eigen::Map<RowMatrix>(H, nv(), nv()) = ws.fd.H();
+}
+
+void UrdfModel::forwardDynamics(Workspace & ws, const double * q, const double * v, const double * tau, double * a) const
+{
+  setState(ws, q, v);
+  rbd::vectorToDof<double>(ConstVector(tau, nv()), ws.mbc.jointTorque);
+  ws.fd.forwardDynamics(mb_, ws.mbc); // throws std::runtime_error when the result is not finite
+  rbd::dofToVector<double>(ws.mbc.alphaD, ws.tau);
+  Eigen::Map<Eigen::VectorXd>(a, nv()) = ws.tau;
+}
+
+void UrdfModel::jacobian(Workspace & ws, int body, const double * q, double * J) const
+{
+  setState(ws, q, nullptr);
+  const auto k = static_cast<std::size_t>(body);
+  auto & jac = ws.jacobians[k];
+  // the link origin, in the MultiBody body frame
+  if(!jac) jac.emplace(mb_, mb_.body(body).name(), X_body_link_[k].translation());
+  jac->fullJacobian(mb_, jac->jacobian(mb_, ws.mbc), ws.fullJacobian);
+  Eigen::Map<RowMatrix>(J, 6, nv()) = ws.fullJacobian;
+}
+
+void UrdfModel::centerOfMass(Workspace & ws, const double * q, double * c) const
+{
+  setState(ws, q, nullptr);
+  Eigen::Map<Eigen::Vector3d>{c} = rbd::computeCoM(mb_, ws.mbc);
+}
+
+void UrdfModel::inverseDynamicsDerivatives(Workspace & ws, const double * q, const double * v, const double * a,
+                                           double * dtauDq, double * dtauDv) const
+{
+  setState(ws, q, v);
+  rbd::vectorToDof<double>(ConstVector(a, nv()), ws.mbc.alphaD);
+  ws.idd.inverseDynamicsDerivatives(mb_, ws.mbc);
+  Eigen::Map<RowMatrix>(dtauDq, nv(), nv()) = ws.idd.dtauDq();
+  Eigen::Map<RowMatrix>(dtauDv, nv(), nv()) = ws.idd.dtauDalpha();
+}
+
+void UrdfModel::forwardDynamicsDerivatives(Workspace & ws, const double * q, const double * v, const double * tau,
+                                           double * a, double * daDq, double * daDv, double * Minv) const
+{
+  setState(ws, q, v);
+  rbd::vectorToDof<double>(ConstVector(tau, nv()), ws.mbc.jointTorque);
+  ws.fdd.forwardDynamicsDerivatives(mb_, ws.mbc); // throws std::runtime_error when the result is not finite
+  Eigen::Map<Eigen::VectorXd>(a, nv()) = ws.fdd.alphaD();
+  Eigen::Map<RowMatrix>(daDq, nv(), nv()) = ws.fdd.dalphaDDq();
+  Eigen::Map<RowMatrix>(daDv, nv(), nv()) = ws.fdd.dalphaDDalpha();
+  Eigen::Map<RowMatrix>(Minv, nv(), nv()) = ws.fdd.Minv();
+}
+
+// --- SceneModel ----------------------------------------------------------------------------------
+
+SceneModel::SceneModel(const std::string & path)
+{
+  const rbd::scene::Scene scene = rbd::scene::loadScene(path);
+  const rbd::scene::SceneRobot robot = rbd::scene::loadSceneRobot(scene);
+  dyn_ = std::make_unique<rbd::scene::SceneDynamics>(robot, scene);
+  name_ = scene.name;
+  for(const auto & b : dyn_->mb().bodies()) links_.push_back(b.name());
+}
+
+std::vector<std::string> SceneModel::dofNames() const { return jointDofNames(dyn_->mb()); }
+
+void SceneModel::forwardKinematics(Workspace &, const double * q, double * out) const
+{
+  const Eigen::VectorXd qv = ConstVector(q, nq());
+  for(std::size_t i = 0; i < links_.size(); ++i) writePose(dyn_->pose(qv, links_[i]), out + 16 * i);
+}
+
+void SceneModel::inverseDynamics(Workspace &, const double * q, const double * v, const double * a, double * tau) const
+{
+  Eigen::Map<Eigen::VectorXd>(tau, nv()) =
+      dyn_->inverseDynamics(ConstVector(q, nq()), ConstVector(v, nv()), ConstVector(a, nv()));
+}
+
+void SceneModel::massMatrix(Workspace &, const double * q, double * H) const
+{
+  Eigen::Map<RowMatrix>(H, nv(), nv()) = dyn_->massMatrix(ConstVector(q, nq()));
+}
+
+void SceneModel::forwardDynamics(Workspace &, const double * q, const double * v, const double * tau, double * a) const
+{
+  const Eigen::VectorXd res = dyn_->forwardDynamics(ConstVector(q, nq()), ConstVector(v, nv()), ConstVector(tau, nv()));
+  if(!res.allFinite()) throw std::runtime_error("forward dynamics: joint acceleration is not finite");
+  Eigen::Map<Eigen::VectorXd>(a, nv()) = res;
+}
+
+void SceneModel::jacobian(Workspace &, int body, const double * q, double * J) const
+{
+  Eigen::Map<RowMatrix>(J, 6, nv()) = dyn_->jacobian(ConstVector(q, nq()), links_[static_cast<std::size_t>(body)]);
+}
+
+void SceneModel::centerOfMass(Workspace &, const double * q, double * c) const
+{
+  Eigen::Map<Eigen::Vector3d>{c} = dyn_->centerOfMass(ConstVector(q, nq()));
+}
+
+void SceneModel::inverseDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * a,
+                                            double * dtauDq, double * dtauDv) const
+{
+  const auto d = dyn_->inverseDynamicsDerivatives(ConstVector(q, nq()), ConstVector(v, nv()), ConstVector(a, nv()));
+  Eigen::Map<RowMatrix>(dtauDq, nv(), nv()) = d.dtauDq;
+  Eigen::Map<RowMatrix>(dtauDv, nv(), nv()) = d.dtauDalpha;
+}
+
+void SceneModel::forwardDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * tau,
+                                            double * a, double * daDq, double * daDv, double * Minv) const
+{
+  const auto d = dyn_->forwardDynamicsDerivatives(ConstVector(q, nq()), ConstVector(v, nv()), ConstVector(tau, nv()));
+  if(!d.alphaD.allFinite()) throw std::runtime_error("forward dynamics: joint acceleration is not finite");
+  Eigen::Map<Eigen::VectorXd>(a, nv()) = d.alphaD;
+  Eigen::Map<RowMatrix>(daDq, nv(), nv()) = d.dalphaDDq;
+  Eigen::Map<RowMatrix>(daDv, nv(), nv()) = d.dalphaDDalpha;
+  Eigen::Map<RowMatrix>(Minv, nv(), nv()) = d.Minv;
+}
+
+} // namespace rbdgen_py

@@ -1,0 +1,207 @@
+#pragma once
+// The runtime behind rbdgen.Robot, in the Model interface of rbdgen_py/bind.hpp:
+//  - UrdfModel: a URDF loaded by the loader, evaluated by rbd:: algorithms (double), one
+//    MultiBodyConfig + algorithm objects per thread (Workspace);
+//  - SceneModel: a scene's robot evaluated by rbd::scene::SceneDynamics (its gravity, damping,
+//    friction, armature, contacts; no external wrenches; derivatives included), reentrant, so its
+//    Workspace is empty.
+// Poses and Jacobians are those of the URDF link frames (= the MultiBody body frames except for
+// bodies moved by backward joints, see ParserResult::bodyBaseTransforms), as in the generated code.
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include <rbd/FD.h>
+#include <rbd/FDDerivatives.h>
+#include <rbd/ID.h>
+#include <rbd/IDDerivatives.h>
+#include <rbd/Jacobian.h>
+#include <rbd/MultiBody.h>
+#include <rbd/MultiBodyConfig.h>
+#include <rbd/parsers/urdf.h>
+#include <rbd/scene/SceneDynamics.h>
+
+namespace rbdgen_py
+{
+
+class UrdfModel
+{
+public:
+  struct Workspace
+  {
+    rbd::MultiBodyConfig mbc;
+    rbd::InverseDynamics id;
+    rbd::ForwardDynamics fd;
+    rbd::InverseDynamicsDerivatives idd;
+    rbd::ForwardDynamicsDerivatives fdd;
+    std::vector<std::optional<rbd::Jacobian>> jacobians; ///< per body, made on first use
+    Eigen::MatrixXd fullJacobian;
+    Eigen::VectorXd tau;
+  };
+
+  UrdfModel(const std::string & path, bool floatingBase, const std::string & baseLink);
+
+  int nq() const { return mb_.nrParams(); }
+  int nv() const { return mb_.nrDof(); }
+  int nbodies() const { return mb_.nrBodies(); }
+  bool hasForwardDynamics() const { return true; }
+  const std::string & name() const { return name_; }
+  std::vector<std::string> dofNames() const;
+  std::vector<std::string> bodyNames() const;
+
+  Workspace makeWorkspace() const;
+  void forwardKinematics(Workspace & ws, const double * q, double * out) const;
+  void inverseDynamics(Workspace & ws, const double * q, const double * v, const double * a, double * tau) const;
+  void massMatrix(Workspace & ws, const double * q, double * H) const;
+  void forwardDynamics(Workspace & ws, const double * q, const double * v, const double * tau, double * a) const;
+  void jacobian(Workspace & ws, int body, const double * q, double * J) const;
+  void centerOfMass(Workspace & ws, const double * q, double * c) const;
+  bool hasDerivatives() const { return true; }
+  std::string noDerivativesReason() const { return {}; }
+  void inverseDynamicsDerivatives(Workspace & ws, const double * q, const double * v, const double * a, double * dtauDq,
+                                  double * dtauDv) const;
+  void forwardDynamicsDerivatives(Workspace & ws, const double * q, const double * v, const double * tau, double * a,
+                                  double * daDq, double * daDv, double * Minv) const;
+
+  const std::vector<std::string> & warnings() const { return warnings_; }
+
+private:
+  /// q (and v when given) into ws.mbc, then forward kinematics (and velocity).
+  void setState(Workspace & ws, const double * q, const double * v) const;
+
+  rbd::MultiBody mb_;
+  std::string name_;
+  std::vector<sva::PTransformd> X_body_link_; ///< per body: MultiBody body frame -> URDF link frame
+  std::vector<std::string> warnings_;
+};
+
+class SceneModel
+{
+public:
+  struct Workspace
+  {
+  };
+
+  explicit SceneModel(const std::string & path);
+
+  int nq() const { return dyn_->nq(); }
+  int nv() const { return dyn_->nv(); }
+  int nbodies() const { return static_cast<int>(links_.size()); }
+  bool hasForwardDynamics() const { return true; }
+  const std::string & name() const { return name_; }
+  std::vector<std::string> dofNames() const;
+  std::vector<std::string> bodyNames() const { return links_; }
+
+  Workspace makeWorkspace() const { return {}; }
+  void forwardKinematics(Workspace &, const double * q, double * out) const;
+  void inverseDynamics(Workspace &, const double * q, const double * v, const double * a, double * tau) const;
+  void massMatrix(Workspace &, const double * q, double * H) const;
+  void forwardDynamics(Workspace &, const double * q, const double * v, const double * tau, double * a) const;
+  void jacobian(Workspace &, int body, const double * q, double * J) const;
+  void centerOfMass(Workspace &, const double * q, double * c) const;
+  /// Every effect of the scene, contacts included (SceneDynamics::inverseDynamicsDerivatives).
+  bool hasDerivatives() const { return true; }
+  std::string noDerivativesReason() const { return {}; }
+  void inverseDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * a, double * dtauDq,
+                                  double * dtauDv) const;
+  void forwardDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * tau, double * a,
+                                  double * daDq, double * daDv, double * Minv) const;
+
+private:
+  std::unique_ptr<rbd::scene::SceneDynamics> dyn_;
+  std::string name_;
+  std::vector<std::string> links_;
+};
+
+/// rbdgen.Robot: either model, one Python class.
+class RuntimeModel
+{
+public:
+  struct Workspace
+  {
+    std::variant<UrdfModel::Workspace, SceneModel::Workspace> w;
+  };
+
+private:
+  // (before their use: their return types are deduced)
+  template<class F>
+  decltype(auto) call(F && f) const
+  {
+    return std::visit(std::forward<F>(f), m_);
+  }
+  /// f(model, its workspace)
+  template<class F>
+  void with(Workspace & ws, F && f) const
+  {
+    std::visit(
+        [&](const auto & m) {
+          using M = std::decay_t<decltype(m)>;
+          f(m, std::get<typename M::Workspace>(ws.w));
+        },
+        m_);
+  }
+
+public:
+  template<class M, class... A>
+  explicit RuntimeModel(std::in_place_type_t<M> t, A &&... args) : m_(t, std::forward<A>(args)...)
+  {
+  }
+
+  int nq() const { return call([](const auto & m) { return m.nq(); }); }
+  int nv() const { return call([](const auto & m) { return m.nv(); }); }
+  int nbodies() const { return call([](const auto & m) { return m.nbodies(); }); }
+  bool hasForwardDynamics() const { return true; }
+  const std::string & name() const { return call([](const auto & m) -> const std::string & { return m.name(); }); }
+  std::vector<std::string> dofNames() const { return call([](const auto & m) { return m.dofNames(); }); }
+  std::vector<std::string> bodyNames() const { return call([](const auto & m) { return m.bodyNames(); }); }
+  bool isScene() const { return std::holds_alternative<SceneModel>(m_); }
+
+  Workspace makeWorkspace() const
+  {
+    return call([](const auto & m) { return Workspace{m.makeWorkspace()}; });
+  }
+  void forwardKinematics(Workspace & ws, const double * q, double * out) const
+  {
+    with(ws, [&](const auto & m, auto & w) { m.forwardKinematics(w, q, out); });
+  }
+  void inverseDynamics(Workspace & ws, const double * q, const double * v, const double * a, double * tau) const
+  {
+    with(ws, [&](const auto & m, auto & w) { m.inverseDynamics(w, q, v, a, tau); });
+  }
+  void massMatrix(Workspace & ws, const double * q, double * H) const
+  {
+    with(ws, [&](const auto & m, auto & w) { m.massMatrix(w, q, H); });
+  }
+  void forwardDynamics(Workspace & ws, const double * q, const double * v, const double * tau, double * a) const
+  {
+    with(ws, [&](const auto & m, auto & w) { m.forwardDynamics(w, q, v, tau, a); });
+  }
+  void jacobian(Workspace & ws, int body, const double * q, double * J) const
+  {
+    with(ws, [&](const auto & m, auto & w) { m.jacobian(w, body, q, J); });
+  }
+  void centerOfMass(Workspace & ws, const double * q, double * c) const
+  {
+    with(ws, [&](const auto & m, auto & w) { m.centerOfMass(w, q, c); });
+  }
+  bool hasDerivatives() const { return call([](const auto & m) { return m.hasDerivatives(); }); }
+  std::string noDerivativesReason() const { return call([](const auto & m) { return m.noDerivativesReason(); }); }
+  void inverseDynamicsDerivatives(Workspace & ws, const double * q, const double * v, const double * a, double * dtauDq,
+                                  double * dtauDv) const
+  {
+    with(ws, [&](const auto & m, auto & w) { m.inverseDynamicsDerivatives(w, q, v, a, dtauDq, dtauDv); });
+  }
+  void forwardDynamicsDerivatives(Workspace & ws, const double * q, const double * v, const double * tau, double * a,
+                                  double * daDq, double * daDv, double * Minv) const
+  {
+    with(ws, [&](const auto & m, auto & w) { m.forwardDynamicsDerivatives(w, q, v, tau, a, daDq, daDv, Minv); });
+  }
+
+private:
+  std::variant<UrdfModel, SceneModel> m_;
+};
+
+} // namespace rbdgen_py

@@ -1,0 +1,167 @@
+"""rbdgen.compile: the generated code, compiled and imported, equals the runtime; the cache makes the
+second call instant. One fixed-base and one floating-base robot (each compile takes seconds)."""
+import os
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+import pytest
+
+import rbdgen
+from conftest import ROBOTS, SCENES, random_states, rel_err
+
+BOUND = 1e-12  # max |generated - runtime| / max(1, max |runtime|), as tests/generator/test_generated
+
+
+ROBOTS_COMPILED = [("double_pendulum.urdf", False), ("quadruped.urdf", True)]
+
+
+@pytest.fixture(scope="module")
+def cache(tmp_path_factory):
+    return tmp_path_factory.mktemp("rbdgen-cache")
+
+
+@pytest.fixture(scope="module")
+def heavy_pendulum(tmp_path_factory):
+    """pendulum.urdf with a 2 kg bob: another URDF text."""
+    heavy = tmp_path_factory.mktemp("urdf") / "heavy.urdf"
+    heavy.write_bytes((ROBOTS / "pendulum.urdf").read_bytes().replace(b'<mass value="1"/>', b'<mass value="2"/>'))
+    return heavy
+
+
+@pytest.fixture(scope="module")
+def first_compiles(cache, heavy_pendulum):
+    """Every robot of this file compiled once, in parallel (compile releases the GIL while the C++
+    compiler runs): {(urdf, floating): (robot, seconds)}."""
+    def build(urdf, floating):
+        start = time.perf_counter()
+        if urdf == heavy_pendulum:  # (and without derivatives)
+            robot = rbdgen.compile(urdf, floating_base=floating, derivatives=False, cache=cache)
+        else:
+            robot = rbdgen.compile(ROBOTS / urdf, floating_base=floating, cache=cache)
+        return robot, time.perf_counter() - start
+
+    jobs = ROBOTS_COMPILED + [(heavy_pendulum, False)]
+    with ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+        futures = {job: pool.submit(build, *job) for job in jobs}
+        return {job: f.result() for job, f in futures.items()}
+
+
+@pytest.fixture(scope="module", params=ROBOTS_COMPILED, ids=["double_pendulum", "quadruped_floating"])
+def pair(request, first_compiles):
+    urdf, floating = request.param
+    compiled, first = first_compiles[(urdf, floating)]
+    runtime = rbdgen.Robot.from_urdf(ROBOTS / urdf, floating_base=floating)
+    return compiled, runtime, floating, first
+
+
+def test_same_robot(pair):
+    compiled, runtime, _, _ = pair
+    assert (compiled.nq, compiled.nv) == (runtime.nq, runtime.nv)
+    assert compiled.dof_names == runtime.dof_names
+    assert compiled.body_names == runtime.body_names
+    assert compiled.name == runtime.name
+    assert compiled.has_forward_dynamics
+    assert compiled.has_derivatives
+
+
+def test_generated_equals_runtime(pair):
+    compiled, runtime, floating, _ = pair
+    q, v, a = random_states(runtime, 50, seed=7, floating=floating)
+    assert rel_err(compiled.forward_kinematics(q), runtime.forward_kinematics(q)) < BOUND
+    assert rel_err(compiled.inverse_dynamics(q, v, a), runtime.inverse_dynamics(q, v, a)) < BOUND
+    assert rel_err(compiled.mass_matrix(q), runtime.mass_matrix(q)) < BOUND
+    assert rel_err(compiled.center_of_mass(q), runtime.center_of_mass(q)) < BOUND
+    for body in runtime.body_names:
+        assert rel_err(compiled.jacobian(body, q), runtime.jacobian(body, q)) < BOUND, body
+    # forward dynamics: two correct solvers differ by about cond(H) eps (here cond(H) < 1e5)
+    assert rel_err(compiled.forward_dynamics(q, v, a), runtime.forward_dynamics(q, v, a)) < 1e-10
+
+
+def test_generated_derivatives_equal_runtime(pair):
+    """Against the runtime's derivatives (themselves checked against finite differences in
+    test_derivatives.py); d a/dq carries H^-1 twice: a looser bound, as in tests/generator."""
+    compiled, runtime, floating, _ = pair
+    q, v, a = random_states(runtime, 20, seed=10, floating=floating)
+    for x, y in zip(compiled.inverse_dynamics_derivatives(q, v, a), runtime.inverse_dynamics_derivatives(q, v, a)):
+        assert rel_err(x, y) < BOUND
+    names = ["a", "da_dq", "da_dv", "Minv"]
+    for name, x, y, bound in zip(names, compiled.forward_dynamics_derivatives(q, v, a),
+                                 runtime.forward_dynamics_derivatives(q, v, a), [1e-12, 1e-10, 1e-10, 1e-12]):
+        assert rel_err(x, y) < bound, name
+    # batch = single calls, any thread count
+    fds = compiled.forward_dynamics_derivatives(q, v, a, threads=3)
+    ids = compiled.inverse_dynamics_derivatives(q, v, a, threads=2)
+    for i in (0, 7, 19):
+        for x, y in zip(fds, compiled.forward_dynamics_derivatives(q[i], v[i], a[i])):
+            np.testing.assert_array_equal(x[i], y)
+        for x, y in zip(ids, compiled.inverse_dynamics_derivatives(q[i], v[i], a[i])):
+            np.testing.assert_array_equal(x[i], y)
+
+
+def test_compiled_batch_threads_and_errors(pair):
+    compiled, runtime, floating, _ = pair
+    q, v, a = random_states(runtime, 33, seed=8, floating=floating)
+    tau = compiled.inverse_dynamics(q, v, a, threads=2)
+    np.testing.assert_array_equal(tau, compiled.inverse_dynamics(q, v, a))
+    for i in range(len(q)):
+        np.testing.assert_array_equal(tau[i], compiled.inverse_dynamics(q[i], v[i], a[i]))
+    np.testing.assert_array_equal(compiled.forward_dynamics(q, v, tau, threads=3), compiled.forward_dynamics(q, v, tau))
+    assert rel_err(compiled.forward_dynamics(q, v, tau), a) < 1e-9
+    with pytest.raises(ValueError, match=r"argument 'q' must have shape \(%d,\) or \(N, %d\)" % (runtime.nq, runtime.nq)):
+        compiled.mass_matrix(np.zeros(runtime.nq + 1))
+    with pytest.raises(TypeError, match="dtype float64"):
+        compiled.mass_matrix(np.zeros(runtime.nq, dtype=np.float32))
+    with pytest.raises(KeyError, match="unknown link"):
+        compiled.jacobian("nope", q[0])
+
+
+def test_second_call_is_instant(pair, cache):
+    compiled, runtime, floating, first = pair
+    urdf = "double_pendulum.urdf" if not floating else "quadruped.urdf"
+    start = time.perf_counter()
+    again = rbdgen.compile(ROBOTS / urdf, floating_base=floating, cache=cache)
+    second = time.perf_counter() - start
+    assert second < 0.1 and second < first / 20, (first, second)
+    q = np.zeros(runtime.nq)
+    q[0] = 1.0
+    np.testing.assert_array_equal(again.mass_matrix(q), compiled.mass_matrix(q))
+
+
+def test_cache_is_keyed_by_the_inputs(cache, heavy_pendulum, first_compiles):
+    """Another URDF text (a heavier bob) gives another module, equal to the runtime on that text; the
+    key changes with every input (checked on the key itself: each compile takes seconds)."""
+    from rbdgen import _compile
+    urdf = (ROBOTS / "pendulum.urdf").read_bytes()
+    heavy = heavy_pendulum
+    compiled = first_compiles[(heavy, False)][0]
+    modules = {d.name for d in cache.iterdir() if d.name.startswith("rbdgen_robot_") and ".tmp-" not in d.name}
+    assert len(modules) == 3  # one per robot of first_compiles, nothing left over from the builds
+    assert len({d.name for d in cache.iterdir()}) == 3
+    q = np.array([0.5])
+    assert compiled.mass_matrix(q)[0, 0] == pytest.approx(2 + 4e-5, rel=1e-14)
+    assert rel_err(compiled.inverse_dynamics(q, q, q), rbdgen.Robot.from_urdf(heavy).inverse_dynamics(q, q, q)) < BOUND
+    assert not compiled.has_derivatives  # compiled with derivatives=False
+    with pytest.raises(RuntimeError, match="inverse_dynamics_derivatives: not available .*without derivatives"):
+        compiled.inverse_dynamics_derivatives(q, q, q)
+    with pytest.raises(RuntimeError, match="forward_dynamics_derivatives: not available"):
+        compiled.forward_dynamics_derivatives(q, q, q)
+    key = _compile._key(urdf, False, None, "c++")
+    assert key == _compile._key(urdf, False, None, "c++")
+    others = [_compile._key(urdf.replace(b"1", b"2", 1), False, None, "c++"), _compile._key(urdf, True, None, "c++"),
+              _compile._key(urdf, False, "link1", "c++"), _compile._key(urdf, False, None, "clang++"),
+              _compile._key(urdf, False, None, "c++", derivatives=False)]
+    assert len({key, *others}) == 6
+
+
+def test_compile_errors(tmp_path, cache):
+    with pytest.raises(FileNotFoundError):
+        rbdgen.compile(tmp_path / "missing.urdf", cache=cache)
+    with pytest.raises(ValueError, match="scene file"):
+        rbdgen.compile(SCENES / "pendulum_damped.xml", cache=cache)
+    broken = tmp_path / "broken.urdf"
+    broken.write_text('<robot name="r"><link name="a" mass="x"/><joint name="j" type="revolute"/></robot>')
+    with pytest.raises(ValueError, match="broken.urdf"):
+        rbdgen.compile(broken, cache=cache)
+    with pytest.raises(RuntimeError, match="compiler failed"):
+        rbdgen.compile(ROBOTS / "pendulum.urdf", cache=cache, cxx="false")

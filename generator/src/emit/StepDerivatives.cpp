@@ -5,6 +5,7 @@
 
 #include <map>
 #include <stdexcept>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -24,52 +25,87 @@ void trimNewline(std::string & s)
   if(!s.empty() && s.back() == '\n') s.pop_back();
 }
 
-/// Euler integrators: the q+ rows of joint mj. semi: Dq [1 0 0] + dt Dw (alpha+ rows), the alpha+
-/// rows being already in A and B; explicit: [Dq, dt Dw, 0] (the rows are zero before).
-std::string eulerRows(const MovingJoint & mj, bool semi)
+/// Euler integrators, joints whose q (+) w is q + w (revolute, prismatic, cylindrical): Dq = Dw = 1
+/// on the n consecutive dofs from v, one block operation for the run. semi: rows = dt (alpha+ rows)
+/// + [1 0 0]; explicit: [1, dt 1, 0] (the rows are zero before).
+std::string vectorRows(const std::vector<std::string> & names, int v, int n, bool semi)
 {
-  const int v = mj.vIndex;
+  std::string list;
+  for(const auto & name : names) list += (list.empty() ? "" : ", ") + name;
+  std::string s = fmt::format("  // {} (q (+) w = q + w: Dq = Dw = 1)\n", list);
+  if(semi)
+    s += fmt::format("  d.A.template middleRows<{0}>({1}) = dt * d.A.template middleRows<{0}>(nv + {1});\n"
+                     "  d.A.template block<{0}, {0}>({1}, {1}).diagonal().array() += S(1);\n"
+                     "  d.B.template middleRows<{0}>({1}) = dt * d.B.template middleRows<{0}>(nv + {1});\n",
+                     n, v);
+  else
+    s += fmt::format("  d.A.template block<{0}, {0}>({1}, {1}).diagonal().setConstant(S(1));\n"
+                     "  d.A.template block<{0}, {0}>({1}, nv + {1}).diagonal().setConstant(dt);\n",
+                     n, v);
+  return s;
+}
+
+/// Euler integrators: the q+ rows of a spherical, free or planar joint. semi: Dq [1 0 0] + dt Dw
+/// (alpha+ rows), the alpha+ rows being already in A and B; explicit: [Dq, dt Dw, 0].
+std::string groupRows(const MovingJoint & mj, bool semi)
+{
+  const int v = mj.vIndex, n = mj.nv;
   std::string s = fmt::format("  // {} ({})\n", mj.name, passes::describeJoint(mj));
-  switch(mj.joint.type())
+  const char * fn = mj.joint.type() == JointType::Free ? "free" : (mj.joint.type() == JointType::Planar ? "planar" : "spherical");
+  s += fmt::format("  {{\n"
+                   "    Eigen::Matrix<S, {0}, {0}> Dq, Dw;\n"
+                   "    detail::{1}_step_blocks<S>(w.data() + {2}, Dq, Dw);\n",
+                   n, fn, v);
+  if(semi)
+    s += fmt::format("    const Eigen::Matrix<S, {0}, {0}> dtDw = dt * Dw;\n"
+                     "    d.A.template middleRows<{0}>({1}) = dtDw * d.A.template middleRows<{0}>(nv + {1});\n"
+                     "    d.A.template block<{0}, {0}>({1}, {1}) += Dq;\n"
+                     "    d.B.template middleRows<{0}>({1}) = dtDw * d.B.template middleRows<{0}>(nv + {1});\n",
+                     n, v);
+  else
+    s += fmt::format("    d.A.template block<{0}, {0}>({1}, {1}) = Dq;\n"
+                     "    d.A.template block<{0}, {0}>({1}, nv + {1}) = dt * Dw;\n",
+                     n, v);
+  return s + "  }\n";
+}
+
+/// Every joint's q+ rows, runs of consecutive vector joints merged.
+std::string eulerRows(const RobotModel & rm, bool semi)
+{
+  std::string out;
+  std::vector<std::string> run;
+  int runStart = 0, runEnd = 0;
+  auto flush = [&] {
+    if(!run.empty()) out += vectorRows(run, runStart, runEnd - runStart, semi);
+    run.clear();
+  };
+  for(const MovingJoint & mj : rm.joints)
   {
-    case JointType::Rev:
-    case JointType::Prism:
-    case JointType::Cylindrical:
-      for(int c = 0; c < mj.nv; ++c)
-      {
-        if(semi)
-          s += fmt::format("  d.A.row({0}) = dt * d.A.row(nv + {0});\n"
-                           "  d.A({0}, {0}) += S(1);\n"
-                           "  d.B.row({0}) = dt * d.B.row(nv + {0});\n",
-                           v + c);
-        else s += fmt::format("  d.A({0}, {0}) = S(1);\n  d.A({0}, nv + {0}) = dt;\n", v + c);
-      }
-      return s;
-    case JointType::Spherical:
-    case JointType::Free:
-    case JointType::Planar:
+    switch(mj.joint.type())
     {
-      const int n = mj.nv;
-      const char * fn = mj.joint.type() == JointType::Free ? "free" : (mj.joint.type() == JointType::Planar ? "planar" : "spherical");
-      s += fmt::format("  {{\n"
-                       "    Eigen::Matrix<S, {0}, {0}> Dq, Dw;\n"
-                       "    detail::{1}_step_blocks<S>(w.data() + {2}, Dq, Dw);\n",
-                       n, fn, v);
-      if(semi)
-        s += fmt::format("    const Eigen::Matrix<S, {0}, {0}> dtDw = dt * Dw;\n"
-                         "    d.A.template middleRows<{0}>({1}) = dtDw * d.A.template middleRows<{0}>(nv + {1});\n"
-                         "    d.A.template block<{0}, {0}>({1}, {1}) += Dq;\n"
-                         "    d.B.template middleRows<{0}>({1}) = dtDw * d.B.template middleRows<{0}>(nv + {1});\n",
-                         n, v);
-      else
-        s += fmt::format("    d.A.template block<{0}, {0}>({1}, {1}) = Dq;\n"
-                         "    d.A.template block<{0}, {0}>({1}, nv + {1}) = dt * Dw;\n",
-                         n, v);
-      return s + "  }\n";
+      case JointType::Rev:
+      case JointType::Prism:
+      case JointType::Cylindrical:
+        if(run.empty() || mj.vIndex != runEnd)
+        {
+          flush();
+          runStart = mj.vIndex;
+        }
+        run.push_back(mj.name);
+        runEnd = mj.vIndex + mj.nv;
+        break;
+      case JointType::Spherical:
+      case JointType::Free:
+      case JointType::Planar:
+        flush();
+        out += groupRows(mj, semi);
+        break;
+      default:
+        throw std::logic_error("joint '" + mj.name + "': no integration rule for its type");
     }
-    default:
-      throw std::logic_error("joint '" + mj.name + "': no integration rule for its type");
   }
+  flush();
+  return out;
 }
 
 /// RK4: the lines of tangent_map, tangent_projection and configuration_derivative_change for mj.
@@ -194,8 +230,7 @@ std::string sceneStepDerivatives(const RobotModel & rm, rbd::scene::Integrator i
   }
   else
   {
-    std::string rows;
-    for(const MovingJoint & mj : rm.joints) rows += eulerRows(mj, semi);
+    std::string rows = eulerRows(rm, semi);
     trimNewline(rows);
     v["step_rows"] = rows;
   }

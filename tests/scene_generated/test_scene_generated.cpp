@@ -18,6 +18,7 @@
 #include <rbd/scene/SceneDynamics.h>
 #include <rbd/scene/StepDerivatives.h>
 
+#include "../generator/AllocationCounter.h"
 #include "SceneAdapter.h"
 #include "TestModels.h"
 
@@ -412,10 +413,16 @@ TEST_P(SceneGenerated, StepDerivatives)
     {
       const State s = randomState(rng, ref, g());
       const auto W = toWrenches(s.w);
+      rbdgentest::AllocationScope live; // the counter works here: the runtime allocates
       const sc::StepDerivatives r = sc::stepDerivatives(ref.dyn, s.q, s.alpha, s.tau, dt, ref.scene.integrator, W);
+      EXPECT_GT(live.count(), 0);
       Vec qn(nq), an(nv);
       Eigen::MatrixXd A(2 * nv, 2 * nv), B(2 * nv, nv);
-      g().stepDerivatives(s.q.data(), s.alpha.data(), s.tau.data(), dt, s.w.data(), qn.data(), an.data(), A.data(), B.data());
+      {
+        rbdgentest::AllocationScope heap; // fixed-size Eigen only: no heap allocation
+        g().stepDerivatives(s.q.data(), s.alpha.data(), s.tau.data(), dt, s.w.data(), qn.data(), an.data(), A.data(), B.data());
+        EXPECT_EQ(heap.count(), 0) << "step_derivatives allocated";
+      }
       Vec x(nq + nv), xr(nq + nv);
       x << qn, an;
       xr << r.next.q, r.next.alpha;

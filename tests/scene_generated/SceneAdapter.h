@@ -44,6 +44,10 @@ struct SceneAdapter
                                      double * alphaD, double * dq, double * da, double * Minv);
   /// Every float function once at the initial state with random-ish inputs: all results finite.
   bool (*floatFinite)();
+  /// step_derivatives (null without <derivatives/> or forward dynamics): the stepped state (nq, nv),
+  /// A (2 nv x 2 nv) and B (2 nv x nv).
+  void (*stepDerivatives)(const double * q, const double * alpha, const double * tau, double dt, const double * w,
+                          double * qNext, double * alphaNext, double * A, double * B);
 };
 
 } // namespace scenegentest

@@ -16,7 +16,9 @@
 #include <rbd/ID.h>
 #include <rbd/scene/Integrators.h>
 #include <rbd/scene/SceneDynamics.h>
+#include <rbd/scene/StepDerivatives.h>
 
+#include "../generator/AllocationCounter.h"
 #include "SceneAdapter.h"
 #include "TestModels.h"
 
@@ -382,6 +384,54 @@ TEST_P(SceneGeneratedStep, StepAndIntegration)
   {
     EXPECT_LE(l->worst, kTol) << l->what;
   }
+}
+
+// step_derivatives against the runtime's rbd::scene::stepDerivatives (itself tested against long
+// double differences of the runtime step in tests/scene/test_step_derivatives) at the scene's dt
+// and at 20 ms (rotations of a few degrees per step: the per-joint derivative blocks of q (+) w far
+// from the identity). The stepped state: 1e-12 like step(). A and B: their alpha rows are dt times
+// the forward dynamics derivatives, which two solvers give ~cond(M) eps apart (the Derivatives test
+// above bounds them by 1e-10 relative to max(1, |d alphaD|)); dt X relative to max(1, |A|) is then
+// within the same 1e-10, and the integration blocks (a few ulps apart) add nothing visible: bound
+// 1e-10 (measured worst 9.5e-13, arm_gravity at 20 ms). Scenes with contacts take 0.1 ms steps.
+TEST_P(SceneGenerated, StepDerivatives)
+{
+  Reference ref(g());
+  if(!ref.scene.outputs.derivatives || !g().forwardDynamics)
+  {
+    EXPECT_EQ(g().stepDerivatives, nullptr);
+    return;
+  }
+  ASSERT_NE(g().stepDerivatives, nullptr);
+  rbdtest::Rng rng(6);
+  const int nq = g().nq, nv = g().nv;
+  Log lA{"step_derivatives A"}, lB{"step_derivatives B"}, lx{"step_derivatives x+"};
+  const std::vector<double> dts =
+      g().ncontacts > 0 ? std::vector<double>{std::min(ref.scene.dt, 1e-4)} : std::vector<double>{ref.scene.dt, 0.02};
+  for(double dt : dts)
+    for(int k = 0; k < 20; ++k)
+    {
+      const State s = randomState(rng, ref, g());
+      const auto W = toWrenches(s.w);
+      rbdgentest::AllocationScope live; // the counter works here: the runtime allocates
+      const sc::StepDerivatives r = sc::stepDerivatives(ref.dyn, s.q, s.alpha, s.tau, dt, ref.scene.integrator, W);
+      EXPECT_GT(live.count(), 0);
+      Vec qn(nq), an(nv);
+      Eigen::MatrixXd A(2 * nv, 2 * nv), B(2 * nv, nv);
+      {
+        rbdgentest::AllocationScope heap; // fixed-size Eigen only: no heap allocation
+        g().stepDerivatives(s.q.data(), s.alpha.data(), s.tau.data(), dt, s.w.data(), qn.data(), an.data(), A.data(), B.data());
+        EXPECT_EQ(heap.count(), 0) << "step_derivatives allocated";
+      }
+      Vec x(nq + nv), xr(nq + nv);
+      x << qn, an;
+      xr << r.next.q, r.next.alpha;
+      lx.add(err(x, xr));
+      lA.add(err(A, r.A));
+      lB.add(err(B, r.B));
+    }
+  EXPECT_LE(lx.worst, kTol) << lx.what;
+  for(const Log * l : {&lA, &lB}) EXPECT_LE(l->worst, 100 * kTol) << l->what;
 }
 
 std::string adapterName(const ::testing::TestParamInfo<const SceneAdapter *> & info)

@@ -11,6 +11,7 @@
 #include <rbd/scene/Integrators.h>
 
 #include "../passes/JointKernels.h"
+#include "StepDerivatives.h"
 #include "Template.h"
 
 namespace rbdgen::emit
@@ -361,6 +362,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
       v["fn_forward_dynamics_derivatives"] =
           sceneForwardDynamicsDerivativesBody(rm, fx, genBias ? "generalized_bias<S>(q, alpha" + wrenchArg + ")" : "", wrenchArg)
               .text;
+    if(fd) v["step_derivatives"] = sceneStepDerivatives(rm, scene.integrator, wrenches, J.normalize);
   }
   v["outputs"] = outputs(rm, scene, fx);
   return fill("scene_dynamics.hpp.in", flags, v);

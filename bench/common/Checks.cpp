@@ -8,7 +8,8 @@ namespace rbdbench
 {
 
 const std::vector<std::string> kAlgorithms = {"fk",       "fk_vel", "id",      "gravity", "nle", "mass_matrix",
-                                              "fd",       "fd_aba", "fd_crba", "jacobian", "jacobian_kin", "com"};
+                                              "fd",       "fd_aba", "fd_crba", "jacobian", "jacobian_kin", "com",
+                                              "id_derivatives", "fd_derivatives"};
 
 void CheckLog::add(const std::string & impl, const std::string & algo, double maxErr, double tol,
                    const std::string & note, bool modelDiffers)

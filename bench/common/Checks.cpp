@@ -37,7 +37,7 @@ void CheckLog::publish(const std::string & robot) const
   {
     char line[160];
     std::snprintf(line, sizeof line, "%.2e %s (tol %.0e)", r.maxErr, r.ok() ? "ok" : r.modelDiffers ? "DIFFERS(model-changed)" : "DISAGREES", r.tol);
-    std::printf("check %-14s %-10s %-12s %s%s%s\n", robot.c_str(), r.impl.c_str(), r.algo.c_str(), line,
+    std::printf("check %-14s %-10s %-14s %s%s%s\n", robot.c_str(), r.impl.c_str(), r.algo.c_str(), line,
                 r.note.empty() ? "" : "  ", r.note.c_str());
     benchmark::AddCustomContext("check/" + r.impl + "/" + r.algo, std::string(line) + (r.note.empty() ? "" : "; ") + r.note);
   }

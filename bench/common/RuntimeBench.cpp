@@ -5,11 +5,14 @@
 #include <rbd/ABA.h>
 #include <rbd/CoM.h>
 #include <rbd/FD.h>
+#include <rbd/FDDerivatives.h>
 #include <rbd/FK.h>
 #include <rbd/FV.h>
 #include <rbd/ID.h>
+#include <rbd/IDDerivatives.h>
 #include <rbd/Jacobian.h>
 
+#include "Derivatives.h"
 #include "Register.h"
 
 namespace rbdbench
@@ -26,11 +29,13 @@ struct RuntimeData
   rbd::ForwardDynamics fd;
   rbd::ForwardDynamicsABA aba;
   rbd::Jacobian jac;
+  rbd::InverseDynamicsDerivatives idd;
+  rbd::ForwardDynamicsDerivatives fdd;
   Eigen::MatrixXd J, C;
 };
 } // namespace
 
-void registerRuntime(const BenchCase & c)
+void registerRuntime(const BenchCase & c, CheckLog & log)
 {
   auto d = std::make_shared<RuntimeData>();
   d->mb = c.model.mb;
@@ -52,6 +57,8 @@ void registerRuntime(const BenchCase & c)
   d->fd = rbd::ForwardDynamics(mb);
   d->aba = rbd::ForwardDynamicsABA(mb);
   d->jac = rbd::Jacobian(mb, c.jacobianBodyName);
+  d->idd = rbd::InverseDynamicsDerivatives(mb);
+  d->fdd = rbd::ForwardDynamicsDerivatives(mb);
   d->J = Eigen::MatrixXd::Zero(6, mb.nrDof());
   d->C = Eigen::MatrixXd::Zero(mb.nrDof(), 1);
   const std::string r = c.name, impl = "runtime";
@@ -127,6 +134,54 @@ void registerRuntime(const BenchCase & c)
     Eigen::Vector3d com = rbd::computeCoM(d->mb, mbc);
     benchmark::DoNotOptimize(com);
   });
+
+  // Derivatives: from q, alpha and alphaD (ID) or tau (FD), forward kinematics and velocities first.
+  checkDerivatives(
+    c, log, impl,
+    [d](std::size_t k) {
+      auto & mbc = d->pool[k];
+      rbd::forwardKinematics(d->mb, mbc);
+      rbd::forwardVelocity(d->mb, mbc);
+      d->idd.inverseDynamicsDerivatives(d->mb, mbc);
+      DerivativesRef out;
+      out.dtau_dq = d->idd.dtauDq();
+      out.dtau_dalpha = d->idd.dtauDalpha();
+      return out;
+    },
+    [d](std::size_t k) {
+      auto & mbc = d->pool[k];
+      rbd::forwardKinematics(d->mb, mbc);
+      rbd::forwardVelocity(d->mb, mbc);
+      d->fdd.forwardDynamicsDerivatives(d->mb, mbc);
+      DerivativesRef out;
+      out.alphaD = d->fdd.alphaD();
+      out.dalphaD_dq = d->fdd.dalphaDDq();
+      out.dalphaD_dalpha = d->fdd.dalphaDDalpha();
+      out.Minv = d->fdd.Minv();
+      return out;
+    },
+    "rbd::InverseDynamicsDerivatives", "rbd::ForwardDynamicsDerivatives");
+  if(derivativesAgree(log, impl, "id_derivatives"))
+    addBench(r, "id_derivatives", impl, [d](std::size_t k) {
+      auto & mbc = d->pool[k];
+      rbd::forwardKinematics(d->mb, mbc);
+      rbd::forwardVelocity(d->mb, mbc);
+      d->idd.inverseDynamicsDerivatives(d->mb, mbc);
+      benchmark::DoNotOptimize(d->idd.dtauDq().data());
+      benchmark::DoNotOptimize(d->idd.dtauDalpha().data());
+      benchmark::ClobberMemory();
+    });
+  if(derivativesAgree(log, impl, "fd_derivatives"))
+    addBench(r, "fd_derivatives", impl, [d](std::size_t k) {
+      auto & mbc = d->pool[k];
+      rbd::forwardKinematics(d->mb, mbc);
+      rbd::forwardVelocity(d->mb, mbc);
+      d->fdd.forwardDynamicsDerivatives(d->mb, mbc);
+      benchmark::DoNotOptimize(d->fdd.dalphaDDq().data());
+      benchmark::DoNotOptimize(d->fdd.dalphaDDalpha().data());
+      benchmark::DoNotOptimize(d->fdd.Minv().data());
+      benchmark::ClobberMemory();
+    });
 }
 
 } // namespace rbdbench

@@ -14,6 +14,9 @@
 //   - inertia: sva::RBInertia(m, h = m c, I_origin) -> pinocchio::Inertia(m, c = h / m,
 //     I_com = I_origin - m (c^T c 1 - c c^T)), appended to the body's joint (identity placement;
 //     a fixed body is appended to its parent's joint with its placement).
+//   - a fixed body also gets a frame (BODY, on that joint, at its placement): the frames are
+//     exactly the fixed links, so forwardKinematics + updateFramePlacements computes every link's
+//     world pose, as our "fk" cells do.
 // States: free joint q = [qw qx qy qz x y z] (orientation and position of the child in the parent),
 // alpha = [w; v] in the child frame; Pinocchio free flyer q = [x y z qx qy qz qw], v = [v; w] in
 // the child frame (LOCAL, linear first): the same motion, so only the order changes. Spherical:
@@ -39,6 +42,7 @@ void registerPinocchio(const BenchCase &, CheckLog &) {}
 #include <pinocchio/algorithm/aba-derivatives.hpp>
 #include <pinocchio/algorithm/aba.hpp>
 #include <pinocchio/algorithm/crba.hpp>
+#include <pinocchio/algorithm/frames.hpp>
 #include <pinocchio/algorithm/jacobian.hpp>
 #include <pinocchio/algorithm/kinematics.hpp>
 #include <pinocchio/algorithm/rnea-derivatives.hpp>
@@ -61,6 +65,7 @@ struct PinocchioData
   std::vector<int> perm;                      ///< perm[our dof] = Pinocchio dof
   std::vector<pinocchio::JointIndex> bodyJoint; ///< runtime body -> Pinocchio joint carrying it
   std::vector<pinocchio::SE3> bodyPlacement;  ///< runtime body frame in that joint's frame
+  std::vector<pinocchio::FrameIndex> bodyFrame; ///< frame of a fixed runtime body (0: a moving body, see oMi)
   pinocchio::JointIndex jacJoint = 0;
   pinocchio::SE3 jacPlacement = pinocchio::SE3::Identity(); ///< Jacobian body in jacJoint's frame
   std::vector<Eigen::VectorXd> q, v, a, tau;  ///< pool states in Pinocchio's layout
@@ -74,6 +79,7 @@ std::string buildModel(const rbd::MultiBody & mb, PinocchioData & d)
   const int nb = mb.nrBodies();
   d.bodyJoint.assign(static_cast<std::size_t>(nb), 0);
   d.bodyPlacement.assign(static_cast<std::size_t>(nb), SE3::Identity());
+  d.bodyFrame.assign(static_cast<std::size_t>(nb), 0);
   d.perm.assign(static_cast<std::size_t>(mb.nrDof()), -1);
   for(int i = 0; i < mb.nrJoints(); ++i)
   {
@@ -98,6 +104,8 @@ std::string buildModel(const rbd::MultiBody & mb, PinocchioData & d)
       d.bodyJoint[static_cast<std::size_t>(b)] = parentJoint;
       d.bodyPlacement[static_cast<std::size_t>(b)] = placement;
       d.model.appendBodyToJoint(parentJoint, inertia, placement);
+      d.bodyFrame[static_cast<std::size_t>(b)] = d.model.addFrame(
+        pinocchio::Frame(mb.body(b).name(), parentJoint, placement, pinocchio::BODY), /*append_inertia*/ false);
       continue;
     }
     pinocchio::JointIndex id = 0;
@@ -261,9 +269,11 @@ void registerPinocchio(const BenchCase & c, CheckLog & log)
   {
     const Reference ref = reference(c, c.pool[k]);
     pinocchio::forwardKinematics(d.model, data, d.q[k]);
+    pinocchio::updateFramePlacements(d.model, data);
     for(int b = 0; b < mb.nrBodies(); ++b)
     {
-      const pinocchio::SE3 oMb = data.oMi[d.bodyJoint[static_cast<std::size_t>(b)]] * d.bodyPlacement[static_cast<std::size_t>(b)];
+      const auto bk = static_cast<std::size_t>(b);
+      const pinocchio::SE3 & oMb = d.bodyFrame[bk] ? data.oMf[d.bodyFrame[bk]] : data.oMi[d.bodyJoint[bk]];
       const sva::PTransformd & X = ref.bodyPosW[static_cast<std::size_t>(b)];
       eFK = std::max({eFK, relErr(oMb.rotation().transpose(), X.rotation()), relErr(oMb.translation(), X.translation())});
     }
@@ -287,7 +297,7 @@ void registerPinocchio(const BenchCase & c, CheckLog & log)
   }
   if(!d.jacPlacement.isIdentity()) eJ = HUGE_VAL; // the Jacobian link is a moving link (BenchCase)
   const double tol = 1e-9;
-  log.add(impl, "fk", eFK, tol, "forwardKinematics: oMi, every link");
+  log.add(impl, "fk", eFK, tol, "forwardKinematics + updateFramePlacements: oMi (moving links), oMf (fixed links)");
   log.add(impl, "id", eID, tol, "rnea");
   log.add(impl, "mass_matrix", eH, tol, "crba (upper triangle), lower triangle filled");
   log.add(impl, "fd", eFD, 1e-12, "aba; error / cond(H), largest cond(H) " + std::to_string(worstCond));
@@ -314,11 +324,14 @@ void registerPinocchio(const BenchCase & c, CheckLog & log)
 
   // --- timed cells (only those that agree); inputs and outputs in Pinocchio's layout -------------
   auto add = [&](const std::string & algo, auto f) {
-    if(log.agrees(impl, algo)) addBench(r, algo, impl, f);
+    const bool derivatives = algo == "id_derivatives" || algo == "fd_derivatives";
+    if(derivatives ? derivativesAgree(log, impl, algo) : log.agrees(impl, algo)) addBench(r, algo, impl, f);
   };
   add("fk", [dp](std::size_t k) {
     pinocchio::forwardKinematics(dp->model, *dp->data, dp->q[k]);
+    pinocchio::updateFramePlacements(dp->model, *dp->data);
     benchmark::DoNotOptimize(dp->data->oMi.back());
+    benchmark::DoNotOptimize(dp->data->oMf.back());
     benchmark::ClobberMemory();
   });
   add("id", [dp](std::size_t k) {

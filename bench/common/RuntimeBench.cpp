@@ -135,51 +135,54 @@ void registerRuntime(const BenchCase & c, CheckLog & log)
     benchmark::DoNotOptimize(com);
   });
 
-  // Derivatives: from q, alpha and alphaD (ID) or tau (FD), forward kinematics and velocities first.
+  // Derivatives: from q, alpha and alphaD (ID) or tau (FD), forward kinematics and velocities first;
+  // the same calls are checked and timed.
+  auto idDerivatives = [d](std::size_t k) -> const rbd::InverseDynamicsDerivatives & {
+    auto & mbc = d->pool[k];
+    rbd::forwardKinematics(d->mb, mbc);
+    rbd::forwardVelocity(d->mb, mbc);
+    d->idd.inverseDynamicsDerivatives(d->mb, mbc);
+    return d->idd;
+  };
+  auto fdDerivatives = [d](std::size_t k) -> const rbd::ForwardDynamicsDerivatives & {
+    auto & mbc = d->pool[k];
+    rbd::forwardKinematics(d->mb, mbc);
+    rbd::forwardVelocity(d->mb, mbc);
+    d->fdd.forwardDynamicsDerivatives(d->mb, mbc);
+    return d->fdd;
+  };
   checkDerivatives(
     c, log, impl,
-    [d](std::size_t k) {
-      auto & mbc = d->pool[k];
-      rbd::forwardKinematics(d->mb, mbc);
-      rbd::forwardVelocity(d->mb, mbc);
-      d->idd.inverseDynamicsDerivatives(d->mb, mbc);
+    [idDerivatives](std::size_t k) {
+      const rbd::InverseDynamicsDerivatives & res = idDerivatives(k);
       DerivativesRef out;
-      out.dtau_dq = d->idd.dtauDq();
-      out.dtau_dalpha = d->idd.dtauDalpha();
+      out.dtau_dq = res.dtauDq();
+      out.dtau_dalpha = res.dtauDalpha();
       return out;
     },
-    [d](std::size_t k) {
-      auto & mbc = d->pool[k];
-      rbd::forwardKinematics(d->mb, mbc);
-      rbd::forwardVelocity(d->mb, mbc);
-      d->fdd.forwardDynamicsDerivatives(d->mb, mbc);
+    [fdDerivatives](std::size_t k) {
+      const rbd::ForwardDynamicsDerivatives & res = fdDerivatives(k);
       DerivativesRef out;
-      out.alphaD = d->fdd.alphaD();
-      out.dalphaD_dq = d->fdd.dalphaDDq();
-      out.dalphaD_dalpha = d->fdd.dalphaDDalpha();
-      out.Minv = d->fdd.Minv();
+      out.alphaD = res.alphaD();
+      out.dalphaD_dq = res.dalphaDDq();
+      out.dalphaD_dalpha = res.dalphaDDalpha();
+      out.Minv = res.Minv();
       return out;
     },
     "rbd::InverseDynamicsDerivatives", "rbd::ForwardDynamicsDerivatives");
   if(derivativesAgree(log, impl, "id_derivatives"))
-    addBench(r, "id_derivatives", impl, [d](std::size_t k) {
-      auto & mbc = d->pool[k];
-      rbd::forwardKinematics(d->mb, mbc);
-      rbd::forwardVelocity(d->mb, mbc);
-      d->idd.inverseDynamicsDerivatives(d->mb, mbc);
-      benchmark::DoNotOptimize(d->idd.dtauDq().data());
-      benchmark::DoNotOptimize(d->idd.dtauDalpha().data());
+    addBench(r, "id_derivatives", impl, [idDerivatives](std::size_t k) {
+      const rbd::InverseDynamicsDerivatives & res = idDerivatives(k);
+      benchmark::DoNotOptimize(res.dtauDq().data());
+      benchmark::DoNotOptimize(res.dtauDalpha().data());
       benchmark::ClobberMemory();
     });
   if(derivativesAgree(log, impl, "fd_derivatives"))
-    addBench(r, "fd_derivatives", impl, [d](std::size_t k) {
-      auto & mbc = d->pool[k];
-      rbd::forwardKinematics(d->mb, mbc);
-      rbd::forwardVelocity(d->mb, mbc);
-      d->fdd.forwardDynamicsDerivatives(d->mb, mbc);
-      benchmark::DoNotOptimize(d->fdd.dalphaDDq().data());
-      benchmark::DoNotOptimize(d->fdd.dalphaDDalpha().data());
-      benchmark::DoNotOptimize(d->fdd.Minv().data());
+    addBench(r, "fd_derivatives", impl, [fdDerivatives](std::size_t k) {
+      const rbd::ForwardDynamicsDerivatives & res = fdDerivatives(k);
+      benchmark::DoNotOptimize(res.dalphaDDq().data());
+      benchmark::DoNotOptimize(res.dalphaDDalpha().data());
+      benchmark::DoNotOptimize(res.Minv().data());
       benchmark::ClobberMemory();
     });
 }

@@ -13,6 +13,7 @@
 
 #include "common/BenchCase.h"
 #include "common/Checks.h"
+#include "common/Derivatives.h"
 #include "common/RuntimeBench.h"
 #include "generated/GeneratedBench.h"
 #include "peers/Peers.h"
@@ -42,8 +43,9 @@ int main(int argc, char ** argv)
   }
 
   rbdbench::CheckLog log;
+  rbdbench::checkDerivativesReference(c, log);
   rbdbench::registerGenerated(c, log);
-  rbdbench::registerRuntime(c);
+  rbdbench::registerRuntime(c, log);
   rbdbench::registerPeers(c, log);
 
   benchmark::Initialize(&nargs, args.data());

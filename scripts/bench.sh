@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Benchmark the generated code against the runtime, KDL and MuJoCo (issue 4), g++ and clang++.
+# Benchmark the generated code against the runtime, KDL, MuJoCo and optionally Pinocchio (issues 4, 15), g++ and clang++.
 #
 #   scripts/bench.sh [--quick] [--robots "ur5e panda"] [--build-dir DIR] [--no-callgrind] [--no-compile-time] [--no-build]
+#                    [--pinocchio PINOCCHIO_SOURCE_DIR]
 #   (BENCH_GCC_DIR / BENCH_CLANG_DIR override DIR/gcc and DIR/clang)
 #
 # Installs what is missing (scripts/install-deps.sh + clang, valgrind, KDL, kdl_parser, MuJoCo),
@@ -12,6 +13,9 @@
 #   bench/results/<date>-<cpu>.md, .csv, bench/results/latest.md (and prints the table).
 # Exit status: non-zero if a build fails or an implementation disagrees with the runtime.
 # --quick: one repetition, short runs, no callgrind, no compile time (a smoke run).
+# --pinocchio DIR: Pinocchio's source tree (e.g. v3.7.0; header-only, see bench/CMakeLists.txt) as one
+#   more peer, timed in both builds (g++ and clang++), and libboost-dev installed; also writes
+#   bench/results/<date>-<cpu>-pinocchio.md and latest-pinocchio.md (rbdgen vs Pinocchio per compiler).
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
 build="$repo/build-bench"
@@ -20,6 +24,7 @@ quick=0
 callgrind=1
 compile_time=1
 build_step=1
+pinocchio=""
 repetitions=3
 min_time=0.05
 while [ $# -gt 0 ]; do
@@ -30,13 +35,16 @@ while [ $# -gt 0 ]; do
     --no-callgrind) callgrind=0 ;;
     --no-compile-time) compile_time=0 ;;
     --no-build) build_step=0 ;;
-    -h|--help) sed -n 2,15p "$0"; exit 0 ;;
+    --pinocchio) pinocchio="$(cd "$2" && pwd)"; shift ;;
+    -h|--help) sed -n 2,19p "$0"; exit 0 ;;
     *) echo "bench.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
   shift
 done
 
-"$repo/scripts/install-deps.sh" clang valgrind liborocos-kdl-dev libkdl-parser-dev libmujoco-dev python3
+extra=()
+[ -n "$pinocchio" ] && extra=(libboost-dev) # Pinocchio's headers use Boost's (variant, fusion, mpl)
+"$repo/scripts/install-deps.sh" clang valgrind liborocos-kdl-dev libkdl-parser-dev libmujoco-dev python3 "${extra[@]}"
 
 jobs="$(nproc)"
 only=()
@@ -49,7 +57,7 @@ for cc in gcc clang; do
   # -Werror off: g++ 12 gives false -Warray-bounds / -Wmaybe-uninitialized in Eigen with AVX-512.
   cmake -S "$repo" -B "${dir[$cc]}" -G Ninja -DCMAKE_BUILD_TYPE=Release "${compiler[@]}" \
         -DCMAKE_CXX_FLAGS=-march=native -DRBDGEN_BUILD_BENCH=ON -DRBDGEN_BUILD_TESTS=OFF -DRBDGEN_WERROR=OFF \
-        "${only[@]}" >/dev/null
+        -DRBDGEN_PINOCCHIO_SOURCE_DIR="$pinocchio" "${only[@]}" >/dev/null
   if [ $build_step = 1 ]; then ninja -C "${dir[$cc]}" -j"$jobs" $targets; fi
 done
 
@@ -62,7 +70,9 @@ for entry in "${entries[@]}"; do
   name="${entry%%=*}"
   for cc in gcc clang; do
     filter=()
-    [ $cc = clang ] && filter=(--benchmark_filter=/gen_)
+    if [ $cc = clang ]; then
+      if [ -n "$pinocchio" ]; then filter=("--benchmark_filter=/(gen_|pinocchio)"); else filter=(--benchmark_filter=/gen_); fi
+    fi
     echo "== $name ($cc)" >&2
     "${dir[$cc]}/bench/bench_$name" "${filter[@]}" --benchmark_repetitions=$repetitions \
       --benchmark_report_aggregates_only=true --benchmark_min_time=$min_time \
@@ -113,7 +123,9 @@ date_iso="$(date -u +%Y-%m-%d)"
   echo "date=$date_iso $(date -u +%H:%M) UTC"
   echo "gcc=$(g++ --version | head -1)"
   echo "clang=$(clang++ --version | head -1)"
-  echo "peers=KDL $(dpkg-query -W -f='${Version}' liborocos-kdl-dev 2>/dev/null) (kdl_parser $(dpkg-query -W -f='${Version}' libkdl-parser-dev 2>/dev/null)), MuJoCo $(dpkg-query -W -f='${Version}' libmujoco-dev 2>/dev/null) (Debian packages)"
+  pin_note=""
+  [ -n "$pinocchio" ] && pin_note=", Pinocchio from $(basename "$pinocchio") (header-only, Boost $(dpkg-query -W -f='${Version}' libboost-dev 2>/dev/null))"
+  echo "peers=KDL $(dpkg-query -W -f='${Version}' liborocos-kdl-dev 2>/dev/null) (kdl_parser $(dpkg-query -W -f='${Version}' libkdl-parser-dev 2>/dev/null)), MuJoCo $(dpkg-query -W -f='${Version}' libmujoco-dev 2>/dev/null) (Debian packages)$pin_note"
   echo "repetitions=$repetitions"
   echo "min_time=$min_time"
 } > "$raw/meta.txt"
@@ -133,8 +145,12 @@ fi
 results="$repo/bench/results"
 mkdir -p "$results"
 slug="$(echo "$cpu" | tr -c 'A-Za-z0-9\n' '-' | sed 's/--*/-/g; s/-$//')"
-python3 "$repo/bench/tools/merge_results.py" --raw "$raw" --md "$results/$date_iso-$slug.md" --csv "$results/$date_iso-$slug.csv"
+pin_md=()
+[ -n "$pinocchio" ] && pin_md=(--pinocchio-md "$results/$date_iso-$slug-pinocchio.md")
+python3 "$repo/bench/tools/merge_results.py" --raw "$raw" --md "$results/$date_iso-$slug.md" --csv "$results/$date_iso-$slug.csv" \
+  "${pin_md[@]}"
 cp "$results/$date_iso-$slug.md" "$results/latest.md"
+[ -n "$pinocchio" ] && cp "$results/$date_iso-$slug-pinocchio.md" "$results/latest-pinocchio.md"
 cp "$raw/scene_effects.txt" "$results/$date_iso-$slug-scene-effects.txt"
 cp "$raw/scene_effects.txt" "$results/latest-scene-effects.txt"
 echo "bench.sh: wrote $results/$date_iso-$slug.md (+ .csv, latest.md)" >&2

@@ -8,7 +8,8 @@ namespace rbdbench
 {
 
 const std::vector<std::string> kAlgorithms = {"fk",       "fk_vel", "id",      "gravity", "nle", "mass_matrix",
-                                              "fd",       "fd_aba", "fd_crba", "jacobian", "jacobian_kin", "com"};
+                                              "fd",       "fd_aba", "fd_crba", "jacobian", "jacobian_kin", "com",
+                                              "id_derivatives", "fd_derivatives"};
 
 void CheckLog::add(const std::string & impl, const std::string & algo, double maxErr, double tol,
                    const std::string & note, bool modelDiffers)
@@ -36,7 +37,7 @@ void CheckLog::publish(const std::string & robot) const
   {
     char line[160];
     std::snprintf(line, sizeof line, "%.2e %s (tol %.0e)", r.maxErr, r.ok() ? "ok" : r.modelDiffers ? "DIFFERS(model-changed)" : "DISAGREES", r.tol);
-    std::printf("check %-14s %-10s %-12s %s%s%s\n", robot.c_str(), r.impl.c_str(), r.algo.c_str(), line,
+    std::printf("check %-14s %-10s %-14s %s%s%s\n", robot.c_str(), r.impl.c_str(), r.algo.c_str(), line,
                 r.note.empty() ? "" : "  ", r.note.c_str());
     benchmark::AddCustomContext("check/" + r.impl + "/" + r.algo, std::string(line) + (r.note.empty() ? "" : "; ") + r.note);
   }

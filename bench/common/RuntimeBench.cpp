@@ -5,11 +5,14 @@
 #include <rbd/ABA.h>
 #include <rbd/CoM.h>
 #include <rbd/FD.h>
+#include <rbd/FDDerivatives.h>
 #include <rbd/FK.h>
 #include <rbd/FV.h>
 #include <rbd/ID.h>
+#include <rbd/IDDerivatives.h>
 #include <rbd/Jacobian.h>
 
+#include "Derivatives.h"
 #include "Register.h"
 
 namespace rbdbench
@@ -26,11 +29,13 @@ struct RuntimeData
   rbd::ForwardDynamics fd;
   rbd::ForwardDynamicsABA aba;
   rbd::Jacobian jac;
+  rbd::InverseDynamicsDerivatives idd;
+  rbd::ForwardDynamicsDerivatives fdd;
   Eigen::MatrixXd J, C;
 };
 } // namespace
 
-void registerRuntime(const BenchCase & c)
+void registerRuntime(const BenchCase & c, CheckLog & log)
 {
   auto d = std::make_shared<RuntimeData>();
   d->mb = c.model.mb;
@@ -52,6 +57,8 @@ void registerRuntime(const BenchCase & c)
   d->fd = rbd::ForwardDynamics(mb);
   d->aba = rbd::ForwardDynamicsABA(mb);
   d->jac = rbd::Jacobian(mb, c.jacobianBodyName);
+  d->idd = rbd::InverseDynamicsDerivatives(mb);
+  d->fdd = rbd::ForwardDynamicsDerivatives(mb);
   d->J = Eigen::MatrixXd::Zero(6, mb.nrDof());
   d->C = Eigen::MatrixXd::Zero(mb.nrDof(), 1);
   const std::string r = c.name, impl = "runtime";
@@ -127,6 +134,57 @@ void registerRuntime(const BenchCase & c)
     Eigen::Vector3d com = rbd::computeCoM(d->mb, mbc);
     benchmark::DoNotOptimize(com);
   });
+
+  // Derivatives: from q, alpha and alphaD (ID) or tau (FD), forward kinematics and velocities first;
+  // the same calls are checked and timed.
+  auto idDerivatives = [d](std::size_t k) -> const rbd::InverseDynamicsDerivatives & {
+    auto & mbc = d->pool[k];
+    rbd::forwardKinematics(d->mb, mbc);
+    rbd::forwardVelocity(d->mb, mbc);
+    d->idd.inverseDynamicsDerivatives(d->mb, mbc);
+    return d->idd;
+  };
+  auto fdDerivatives = [d](std::size_t k) -> const rbd::ForwardDynamicsDerivatives & {
+    auto & mbc = d->pool[k];
+    rbd::forwardKinematics(d->mb, mbc);
+    rbd::forwardVelocity(d->mb, mbc);
+    d->fdd.forwardDynamicsDerivatives(d->mb, mbc);
+    return d->fdd;
+  };
+  checkDerivatives(
+    c, log, impl,
+    [idDerivatives](std::size_t k) {
+      const rbd::InverseDynamicsDerivatives & res = idDerivatives(k);
+      DerivativesRef out;
+      out.dtau_dq = res.dtauDq();
+      out.dtau_dalpha = res.dtauDalpha();
+      return out;
+    },
+    [fdDerivatives](std::size_t k) {
+      const rbd::ForwardDynamicsDerivatives & res = fdDerivatives(k);
+      DerivativesRef out;
+      out.alphaD = res.alphaD();
+      out.dalphaD_dq = res.dalphaDDq();
+      out.dalphaD_dalpha = res.dalphaDDalpha();
+      out.Minv = res.Minv();
+      return out;
+    },
+    "rbd::InverseDynamicsDerivatives", "rbd::ForwardDynamicsDerivatives");
+  if(derivativesAgree(log, impl, "id_derivatives"))
+    addBench(r, "id_derivatives", impl, [idDerivatives](std::size_t k) {
+      const rbd::InverseDynamicsDerivatives & res = idDerivatives(k);
+      benchmark::DoNotOptimize(res.dtauDq().data());
+      benchmark::DoNotOptimize(res.dtauDalpha().data());
+      benchmark::ClobberMemory();
+    });
+  if(derivativesAgree(log, impl, "fd_derivatives"))
+    addBench(r, "fd_derivatives", impl, [fdDerivatives](std::size_t k) {
+      const rbd::ForwardDynamicsDerivatives & res = fdDerivatives(k);
+      benchmark::DoNotOptimize(res.dalphaDDq().data());
+      benchmark::DoNotOptimize(res.dalphaDDalpha().data());
+      benchmark::DoNotOptimize(res.Minv().data());
+      benchmark::ClobberMemory();
+    });
 }
 
 } // namespace rbdbench

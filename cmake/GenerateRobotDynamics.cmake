@@ -3,7 +3,7 @@
 #   find_package(rbdgen CONFIG REQUIRED)
 #   generate_robot_dynamics(TARGET panda_dynamics URDF robots/panda.urdf
 #                           [NAMESPACE panda] [FLOATING_BASE] [BASE_LINK link] [OUTPUT_DIR dir] [STRICT]
-#                           [DERIVATIVES] [PYTHON_MODULE module])
+#                           [DERIVATIVES] [INDEPENDENT_MIMIC] [PYTHON_MODULE module])
 #   generate_robot_dynamics(TARGET quadruped_sim SCENE scenes/quadruped_ground.xml
 #                           [NAMESPACE ns] [OUTPUT_DIR dir] [STRICT])
 #   target_link_libraries(my_controller PRIVATE panda_dynamics)
@@ -16,12 +16,14 @@
 # base and base link come from the scene (URDF, FLOATING_BASE and BASE_LINK are errors then).
 # NAMESPACE defaults to the URDF robot name made into an identifier (with SCENE: the TARGET name);
 # OUTPUT_DIR to ${CMAKE_CURRENT_BINARY_DIR}/<TARGET>. rbdgen's warnings (the loader's: non-physical
-# inertias, mimic joints loaded as independent joints, a URDF floating joint used as the base; the
+# inertias, a mimic of a fixed joint, a URDF floating joint used as the base; the
 # mass matrix checks: joints moving only massless links, two free joints with a massless link
 # between them, dofs of negligible effective inertia) are printed by the build as
 # "rbdgen: warning: ..." (Ninja and Make show a custom command's output) and never fail it.
 # STRICT: the mass matrix checks are errors instead of warnings. DERIVATIVES: the header also has
 # inverse_dynamics_derivatives() and forward_dynamics_derivatives() (rbdgen generate --derivatives).
+# Mimic joints are coupled to the joints they follow (not dofs; the full model is in NS::independent);
+# INDEPENDENT_MIMIC keeps them as independent joints with their own dofs (rbdgen --independent-mimic).
 #
 # PYTHON_MODULE module (URDF only): also a pybind11 module target `module` (`import module`;
 # module.robot() is the object of rbdgen.compile: the API of rbdgen.Robot, with the derivatives when
@@ -48,7 +50,7 @@ function(_rbdgen_identifier out text)
 endfunction()
 
 function(generate_robot_dynamics)
-  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE;STRICT;DERIVATIVES" "TARGET;URDF;SCENE;NAMESPACE;BASE_LINK;OUTPUT_DIR;PYTHON_MODULE" "")
+  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE;STRICT;DERIVATIVES;INDEPENDENT_MIMIC" "TARGET;URDF;SCENE;NAMESPACE;BASE_LINK;OUTPUT_DIR;PYTHON_MODULE" "")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "generate_robot_dynamics: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
@@ -105,6 +107,9 @@ function(generate_robot_dynamics)
   endif()
   if(arg_DERIVATIVES)
     list(APPEND options --derivatives)
+  endif()
+  if(arg_INDEPENDENT_MIMIC)
+    list(APPEND options --independent-mimic)
   endif()
   if(arg_BASE_LINK)
     list(APPEND options --base-link "${arg_BASE_LINK}")

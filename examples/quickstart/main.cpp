@@ -25,9 +25,12 @@
 #include <rbd/ID.h>
 #include <rbd/parsers/urdf.h>
 
-// robot::forward_dynamics exists only when robot::has_forward_dynamics. These declarations, never
+// model::forward_dynamics exists only when model::has_forward_dynamics. These declarations, never
 // called, keep the code below well-formed for either header; the header's function wins overload
 // resolution when it exists (both are seen through the using-directives of quickstart_fd).
+/// The full model (mimic joints as dofs; the same as robot:: without mimic joints): the runtime's tree.
+namespace model = robot::independent;
+
 namespace quickstart_fallback
 {
 struct Absent
@@ -38,7 +41,7 @@ template<class S, class... A> Absent forward_dynamics(const A &...);
 namespace quickstart_fd
 {
 using namespace quickstart_fallback;
-using namespace robot;
+using namespace robot::independent;
 } // namespace quickstart_fd
 
 namespace
@@ -53,11 +56,11 @@ constexpr double kMeaningful = 1e-6; // forward dynamics is checked where cond(H
 /// Generated forward dynamics alphaD = FD(q, alpha, tau) (zero when the header has none; never
 /// called then). A template, so that the call is compiled only when it exists.
 template<class S = double>
-robot::Tangent<S> generatedForwardDynamics(const VectorX & q, const VectorX & alpha, const VectorX & tau)
+model::Tangent<S> generatedForwardDynamics(const VectorX & q, const VectorX & alpha, const VectorX & tau)
 {
-  if constexpr(robot::has_forward_dynamics)
-    return quickstart_fd::forward_dynamics<S>(robot::Config<S>(q), robot::Tangent<S>(alpha), robot::Tangent<S>(tau));
-  else return robot::Tangent<S>::Zero();
+  if constexpr(model::has_forward_dynamics)
+    return quickstart_fd::forward_dynamics<S>(model::Config<S>(q), model::Tangent<S>(alpha), model::Tangent<S>(tau));
+  else return model::Tangent<S>::Zero();
 }
 
 
@@ -144,14 +147,18 @@ int main()
   const rbd::parsers::ParserResult urdf = rbd::parsers::fromUrdfFile(RBDGEN_QUICKSTART_URDF_PATH, opt);
   const rbd::MultiBody & mb = urdf.mb;
   std::printf("robot '%s' from %s (%s base): nq = %d, nv = %d, %d bodies\n", urdf.name.c_str(),
-              RBDGEN_QUICKSTART_URDF_PATH, RBDGEN_QUICKSTART_FLOATING_BASE ? "floating" : "fixed", robot::nq, robot::nv,
-              robot::nbodies);
-  if(mb.nrParams() != robot::nq || mb.nrDof() != robot::nv || mb.nrBodies() != robot::nbodies)
+              RBDGEN_QUICKSTART_URDF_PATH, RBDGEN_QUICKSTART_FLOATING_BASE ? "floating" : "fixed", model::nq, model::nv,
+              model::nbodies);
+  if(mb.nrParams() != model::nq || mb.nrDof() != model::nv || mb.nrBodies() != model::nbodies)
   {
     std::printf("error: the generated header does not match the URDF (nq %d, nv %d, bodies %d)\n", mb.nrParams(),
                 mb.nrDof(), mb.nrBodies());
     return 1;
   }
+  if(robot::nv != model::nv)
+    std::printf("mimic joints coupled: robot:: has nq = %d, nv = %d; the checks below are on the full model "
+                "robot::independent (the coupled functions are its projection, tests/generator/test_mimic_coupling)\n",
+                robot::nq, robot::nv);
   // MultiBody body frame -> URDF link frame (identity unless the base is not the URDF root).
   std::vector<sva::PTransformd> X_mb_link;
   for(const auto & b : mb.bodies())
@@ -174,11 +181,11 @@ int main()
   const double eps = std::numeric_limits<double>::epsilon();
   for(const State & s : pool)
   {
-    const robot::Config<double> q = s.q;
-    const robot::Tangent<double> alpha = s.alpha, alphaD = s.alphaD;
+    const model::Config<double> q = s.q;
+    const model::Tangent<double> alpha = s.alpha, alphaD = s.alphaD;
     setState(mb, mbc, s);
     // Forward kinematics: world pose of every link.
-    const auto poses = robot::forward_kinematics<double>(q);
+    const auto poses = model::forward_kinematics<double>(q);
     for(int i = 0; i < mb.nrBodies(); ++i)
     {
       const auto k = static_cast<std::size_t>(i);
@@ -188,18 +195,18 @@ int main()
     }
     // Inverse dynamics: tau = ID(q, alpha, alphaD).
     id.inverseDynamics(mb, mbc);
-    errID = std::max(errID, relErr(robot::inverse_dynamics<double>(q, alpha, alphaD), rbd::dofToVector(mb, mbc.jointTorque)));
+    errID = std::max(errID, relErr(model::inverse_dynamics<double>(q, alpha, alphaD), rbd::dofToVector(mb, mbc.jointTorque)));
     // Mass matrix and forward dynamics: alphaD = H^-1 (tau - C).
     rbd::vectorToDof<double>(s.tau, mbc.jointTorque);
     fd.forwardDynamics(mb, mbc);
-    errH = std::max(errH, relErr(robot::mass_matrix<double>(q), fd.H()));
+    errH = std::max(errH, relErr(model::mass_matrix<double>(q), fd.H()));
     // An ill-conditioned H amplifies rounding: both solves are only good to about cond(H) eps, so
     // the comparison means something only where cond(H) eps is small.
     const Eigen::VectorXd lambda = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(fd.H(), Eigen::EigenvaluesOnly).eigenvalues();
     const double condH = lambda.minCoeff() > 0 ? lambda.maxCoeff() / lambda.minCoeff() : HUGE_VAL; // singular H
     worstCondH = std::max(worstCondH, condH);
     bestCondH = std::min(bestCondH, condH);
-    if(robot::has_forward_dynamics && condH * eps <= kMeaningful)
+    if(model::has_forward_dynamics && condH * eps <= kMeaningful)
     {
       const double eFD = relErr(generatedForwardDynamics(s.q, s.alpha, s.tau), rbd::dofToVector(mb, mbc.alphaD));
       errFD = std::max(errFD, eFD);
@@ -213,7 +220,7 @@ int main()
   std::printf("  %-20s %9.2e  %s\n", "forward kinematics", errFK, okFK ? "ok" : "MISMATCH");
   std::printf("  %-20s %9.2e  %s\n", "inverse dynamics", errID, okID ? "ok" : "MISMATCH");
   std::printf("  %-20s %9.2e  %s\n", "mass matrix", errH, okH ? "ok" : "MISMATCH");
-  if(!robot::has_forward_dynamics)
+  if(!model::has_forward_dynamics)
     std::printf("  %-20s %9s  skipped: the header has no forward dynamics (has_forward_dynamics == false: the mass "
                 "matrix is singular; rbdgen's warning and the header's comment name the joints)\n",
                 "forward dynamics", "-");
@@ -235,7 +242,7 @@ int main()
     keep(mbc.jointTorque[0]);
   });
   const double genID = nsPerCall(pool, [&](const State & s) {
-    const robot::Tangent<double> t = robot::inverse_dynamics<double>(robot::Config<double>(s.q), s.alpha, s.alphaD);
+    const model::Tangent<double> t = model::inverse_dynamics<double>(model::Config<double>(s.q), s.alpha, s.alphaD);
     keep(t);
   });
   const double rtFD = nsPerCall(pool, [&](const State & s) {
@@ -244,16 +251,16 @@ int main()
     keep(mbc.alphaD[0]);
   });
   double genFD = 0;
-  if(robot::has_forward_dynamics)
+  if(model::has_forward_dynamics)
     genFD = nsPerCall(pool, [&](const State & s) {
-      const robot::Tangent<double> a = generatedForwardDynamics(s.q, s.alpha, s.tau);
+      const model::Tangent<double> a = generatedForwardDynamics(s.q, s.alpha, s.tau);
       keep(a);
     });
   std::printf("\ntime per call, ns (median of %d runs over %d different inputs; runtime = set mbc + FK + FV + algorithm)\n",
               kRuns, kStates);
   std::printf("  %-20s %10s %10s %9s\n", "", "runtime", "generated", "speed-up");
   std::printf("  %-20s %10.0f %10.0f %8.1fx\n", "inverse dynamics", rtID, genID, rtID / genID);
-  if(robot::has_forward_dynamics) std::printf("  %-20s %10.0f %10.0f %8.1fx\n", "forward dynamics", rtFD, genFD, rtFD / genFD);
+  if(model::has_forward_dynamics) std::printf("  %-20s %10.0f %10.0f %8.1fx\n", "forward dynamics", rtFD, genFD, rtFD / genFD);
   else std::printf("  %-20s %10.0f %10s %9s  (not generated: singular mass matrix)\n", "forward dynamics", rtFD, "-", "-");
   return ok ? 0 : 1;
 }

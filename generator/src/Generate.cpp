@@ -15,6 +15,7 @@
 #include <rbd/scene/SceneLoader.h>
 
 #include "emit/Functions.h"
+#include "emit/MimicCoupled.h"
 #include "emit/RobotValues.h"
 #include "emit/SceneHeader.h"
 #include "emit/Template.h"
@@ -91,6 +92,9 @@ std::vector<GeneratedFile> generateScene(const GenerateOptions & opt, std::vecto
   const std::string ns = checkedNamespace(opt.ns, scene.name.empty() ? sr.robot.name : scene.name);
   const emit::SceneEffects fx = emit::sceneEffects(rm, scene, sr);
   printLoaderWarnings(sr.robot.warnings);
+  for(const std::string & m : rbd::parsers::coupleMimics(sr.robot, scene.urdf, nullptr).coupled)
+    std::cerr << "rbdgen: warning: " << opt.scene << ": mimic joint not coupled in a scene (an independent joint with its own dof): "
+              << m << "\n";
   massMatrixPolicy(rm.checks, emit::unregularisedMasslessJoints(rm, fx), opt.scene, opt.strict);
   const std::string sceneText = readFile(opt.scene), urdfText = readFile(scene.urdf);
   std::string p;
@@ -120,8 +124,10 @@ RobotModel robotModelFromUrdf(const rbd::parsers::ParserResult & robot)
 }
 
 std::string emitHeader(const RobotModel & rm, const std::string & ns, const std::string & sourceName,
-                       const std::string & sourceHash, const std::string & options, bool derivatives)
+                       const std::string & sourceHash, const std::string & options, bool derivatives,
+                       const rbd::parsers::MimicCoupling & coupling)
 {
+  const bool coupled = !coupling.empty();
   // Forward dynamics: both algorithms are emitted; forward_dynamics() calls the one with fewer
   // floating-point operations (CRBA's count includes the nonlinear_effects() it calls).
   // Operation counts of whole algorithms (each body emitting every pass it runs), for the choice.
@@ -146,7 +152,10 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
                   abaCost, crbaCost);
   std::map<std::string, std::string> v;
   v["provenance"] = provenance(rm, sourceName, sourceHash, options, fdAlgorithm);
-  v["namespace"] = ns;
+  if(coupled)
+    v["provenance"] += fmt::format("\n// Mimic joints coupled: nq = {}, nv = {} in namespace {} (the full model above in {}::independent).",
+                                   coupling.nq, coupling.nv, ns, ns);
+  v["namespace"] = coupled ? ns + "::independent" : ns;
   v.merge(emit::robotTemplateValues(rm)); // nq, nv, nbodies, nframes, Body enum, names
   const bool fd = rm.regularMassMatrix();
   v["fd_algorithm"] = fd ? fdAlgorithm : "none (singular mass matrix)";
@@ -204,9 +213,18 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
   if(derivatives) v["detail_opaque"] = templateText("detail_opaque.hpp.in"); // detail::opaque (derivatives)
   const std::string text = selectSections(templateText("dynamics.hpp.in"),
-                                          {{"forward_dynamics", fd}, {"no_forward_dynamics", !fd}, {"derivatives", derivatives}},
+                                          {{"forward_dynamics", fd},
+                                           {"no_forward_dynamics", !fd},
+                                           {"derivatives", derivatives},
+                                           {"independent_alias", !coupled}},
                                           "templates/dynamics.hpp.in");
-  return fillTemplate(text, v, "templates/dynamics.hpp.in");
+  std::string header = fillTemplate(text, v, "templates/dynamics.hpp.in");
+  if(coupled)
+  {
+    const bool coupledFd = rm.checks.stackedFree.empty() && emit::coupledMasslessJoints(rm, coupling).empty();
+    header += emit::mimicCoupledSection(coupling, ns, coupledFd, derivatives);
+  }
+  return header;
 }
 
 std::vector<GeneratedFile> generateFiles(const GenerateOptions & opt, std::vector<std::string> * inputs)
@@ -220,13 +238,23 @@ std::vector<GeneratedFile> generateFiles(const GenerateOptions & opt, std::vecto
   const RobotModel rm = robotModelFromUrdf(robot);
   const std::string ns = checkedNamespace(opt.ns, robot.name);
   printLoaderWarnings(robot.warnings);
-  massMatrixPolicy(rm.checks, rm.masslessSubtrees, opt.urdf, opt.strict);
+  std::vector<std::string> mimicWarnings;
+  const rbd::parsers::MimicCoupling coupling =
+      opt.independentMimic ? rbd::parsers::MimicCoupling{} : rbd::parsers::coupleMimics(robot, opt.urdf, &mimicWarnings);
+  if(opt.independentMimic)
+    for(const std::string & m : rbd::parsers::coupleMimics(robot, opt.urdf, nullptr).coupled)
+      mimicWarnings.push_back(opt.urdf + ": mimic joint not coupled (--independent-mimic), its own dof: " + m);
+  printLoaderWarnings(mimicWarnings);
+  massMatrixPolicy(rm.checks, coupling.empty() ? rm.masslessSubtrees : emit::coupledMasslessJoints(rm, coupling), opt.urdf,
+                   opt.strict);
   if(inputs) *inputs = {fs::absolute(opt.urdf).lexically_normal().string()};
-  const std::string options = fmt::format("{}{}{}", opt.floatingBase ? "floating base" : "fixed base",
+  const std::string options = fmt::format("{}{}{}{}", opt.floatingBase ? "floating base" : "fixed base",
                                           opt.baseLink.empty() ? "" : ", base link " + opt.baseLink,
-                                          opt.derivatives ? ", derivatives" : "");
+                                          opt.derivatives ? ", derivatives" : "",
+                                          opt.independentMimic ? ", independent mimic joints" : "");
   const std::string text = readFile(opt.urdf);
-  const std::string header = emitHeader(rm, ns, fs::path(opt.urdf).filename().string(), sha256Hex(text), options, opt.derivatives);
+  const std::string header =
+      emitHeader(rm, ns, fs::path(opt.urdf).filename().string(), sha256Hex(text), options, opt.derivatives, coupling);
   return {GeneratedFile{ns + "/dynamics.hpp", header}};
 }
 

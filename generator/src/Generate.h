@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <rbd/parsers/MimicCoupling.h>
 #include <rbd/parsers/urdf.h>
 
 #include "model/RobotModel.h"
@@ -23,6 +24,9 @@ struct GenerateOptions
   bool floatingBase = false;
   std::string baseLink;      ///< default: the URDF root link
   bool derivatives = false;  ///< also emit inverse/forward dynamics derivatives
+  /// Mimic joints as independent joints with their own dofs (the URDF's coupling ignored); default:
+  /// coupled (rbd/parsers/MimicCoupling.h), the full model then in namespace <ns>::independent.
+  bool independentMimic = false;
 };
 
 struct GeneratedFile
@@ -49,8 +53,11 @@ RobotModel robotModelFromUrdf(const rbd::parsers::ParserResult & robot);
 
 /// Emit the header for a model (ns: namespace, sourceName and sourceHash for provenance).
 /// derivatives: also emit inverse_dynamics_derivatives() and forward_dynamics_derivatives().
+/// A non-empty coupling (mimic joints) emits the full model in ns::independent and the coupled API in
+/// ns (emit/MimicCoupled.h); otherwise ns::independent is an alias of ns.
 std::string emitHeader(const RobotModel & rm, const std::string & ns, const std::string & sourceName,
-                       const std::string & sourceHash, const std::string & options, bool derivatives = false);
+                       const std::string & sourceHash, const std::string & options, bool derivatives = false,
+                       const rbd::parsers::MimicCoupling & coupling = {});
 
 /// Write files under outDir: each goes to a temporary file first and is renamed into place only
 /// once all were written; a file whose content did not change is left untouched (mtime kept).

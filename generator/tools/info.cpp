@@ -6,6 +6,7 @@
 #include <rbd/FK.h>
 #include <rbd/FV.h>
 #include <rbd/ID.h>
+#include <rbd/parsers/MimicCoupling.h>
 
 #include "model/MassMatrixChecks.h"
 
@@ -68,6 +69,14 @@ void printInfo(std::ostream & os, const rbd::parsers::ParserResult & robot, cons
   fmt::print(os, "tree (body <- joint):\n");
   printTree(os, mb);
   for(const auto & w : robot.warnings) fmt::print(os, "warning: {}\n", w);
+  std::vector<std::string> mimicWarnings;
+  const rbd::parsers::MimicCoupling coupling = rbd::parsers::coupleMimics(robot, source, &mimicWarnings);
+  for(const auto & w : mimicWarnings) fmt::print(os, "warning: {}\n", w);
+  if(!coupling.empty())
+  {
+    fmt::print(os, "mimic joints coupled (generate's default): nq = {}, nv = {}\n", coupling.nq, coupling.nv);
+    for(const auto & c : coupling.coupled) fmt::print(os, "  {}\n", c);
+  }
   const MassMatrixReport checks = checkMassMatrix(mb);
   if(checks.smallest.joint.empty()) fmt::print(os, "mass matrix at q = 0: M = {:.4g} kg, L = {:.3g} m\n", checks.totalMass, checks.length);
   else

@@ -220,15 +220,6 @@ ParserResult fromUrdfString(const std::string & xml, const ParserOptions & opt, 
     if(j.type() != rbd::Joint::Fixed) addLimits(uj, j, res.limits);
     if(uj.dynamics) res.dynamics[j.name()] = JointDynamics{uj.dynamics->damping, uj.dynamics->friction};
     if(uj.mimic) res.mimics[j.name()] = Mimic{uj.mimic->joint_name, uj.mimic->multiplier, uj.mimic->offset};
-    if(uj.mimic && j.type() != rbd::Joint::Fixed) // a fixed joint has nothing to couple: no warning
-    {
-      std::ostringstream os;
-      os << sourceName << ": joint '" << j.name() << "': mimics joint '" << uj.mimic->joint_name << "' (q = "
-         << uj.mimic->multiplier << " q_" << uj.mimic->joint_name << " + " << uj.mimic->offset
-         << "): NOT coupled, loaded as an independent joint with its own dof (nq and nv count it; its position, "
-            "velocity and torque are free)";
-      res.warnings.push_back(os.str());
-    }
   }
   return res;
 }

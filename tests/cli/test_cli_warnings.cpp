@@ -69,21 +69,43 @@ int headerInt(const std::string & header, const std::string & name)
 
 TEST_F(CliTest, GenerateShowsTheLoadersWarningsAndSucceeds)
 {
-  // A mimic revolute joint (loaded as an independent joint: the warning says so) and a mimic
-  // fixed joint (nothing to couple: no warning).
+  // A mimic revolute joint (coupled: not a dof, no warning), a mimic fixed joint (nothing to couple:
+  // no warning) and a mimic of that fixed joint (kept as an independent joint: the warning says so).
   const std::string urdf = "<robot name=\"mim\">" + link("base", 1) + link("a", 1, "0.1 0 0") + link("b", 1, "0.1 0 0") +
-                           link("c", 1, "0.1 0 0") + joint("lead", "revolute", "base", "a") +
+                           link("c", 1, "0.1 0 0") + link("d", 1, "0.1 0 0") + joint("lead", "revolute", "base", "a") +
                            joint("follower", "revolute", "a", "b", "<mimic joint=\"lead\" multiplier=\"2\"/>") +
-                           joint("stuck", "fixed", "b", "c", "<mimic joint=\"lead\"/>") + "</robot>";
+                           joint("stuck", "fixed", "b", "c", "<mimic joint=\"lead\"/>") +
+                           joint("orphan", "revolute", "c", "d", "<mimic joint=\"stuck\"/>") + "</robot>";
   writeFile(dir() / "mim.urdf", urdf);
   const Result r = rbdgen({"generate", "mim.urdf", "--out", "out"}, dir());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_TRUE(warns(r, {"mim.urdf: joint 'follower'", "mimics joint 'lead'", "NOT coupled", "independent joint"}));
-  EXPECT_EQ(r.err.find("'stuck'"), std::string::npos) << r.err;
+  EXPECT_TRUE(warns(r, {"mim.urdf: joint 'orphan'", "mimics joint 'stuck'", "fixed", "independent joint"}));
+  EXPECT_EQ(r.err.find("'follower'"), std::string::npos) << r.err;
   EXPECT_EQ(stderrLines(r.err).size(), 1u) << r.err;
-  EXPECT_TRUE(fs::exists(dir() / "out/mim/dynamics.hpp"));
+  const std::string header = readFile(dir() / "out/mim/dynamics.hpp");
+  EXPECT_EQ(headerInt(header, "nv"), 2); // lead and orphan; follower = 2 lead
+  EXPECT_NE(header.find("\"follower = 2 * lead + 0\""), std::string::npos);
   // Warnings do not fail --strict either: they are not mass matrix hazards.
   EXPECT_EQ(rbdgen({"generate", "mim.urdf", "--out", "out", "--strict"}, dir()).code, 0);
+  // --independent-mimic: the old behaviour, with a warning per mimic joint and the option in the provenance.
+  const Result ind = rbdgen({"generate", "mim.urdf", "--out", "ind", "--independent-mimic"}, dir());
+  ASSERT_EQ(ind.code, 0) << ind.err;
+  EXPECT_TRUE(warns(ind, {"mim.urdf", "not coupled (--independent-mimic)", "follower = 2 * lead + 0"}));
+  const std::string indHeader = readFile(dir() / "ind/mim/dynamics.hpp");
+  EXPECT_EQ(headerInt(indHeader, "nv"), 3);
+  EXPECT_NE(indHeader.find("independent mimic joints"), std::string::npos);
+}
+
+TEST_F(CliTest, MimicCycleIsAnError)
+{
+  const std::string urdf = "<robot name=\"cyc\">" + link("base", 1) + link("a", 1, "0.1 0 0") + link("b", 1, "0.1 0 0") +
+                           joint("j1", "revolute", "base", "a", "<mimic joint=\"j2\"/>") +
+                           joint("j2", "revolute", "a", "b", "<mimic joint=\"j1\"/>") + "</robot>";
+  writeFile(dir() / "cyc.urdf", urdf);
+  const Result r = rbdgen({"generate", "cyc.urdf", "--out", "out"}, dir());
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("cyc.urdf: joint 'j1': mimic cycle j1 -> j2 -> j1"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir() / "out"));
 }
 
 TEST_F(CliTest, FloatingJointUnderAMasslessRootIsTheFloatingBase)

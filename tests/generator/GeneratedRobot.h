@@ -53,8 +53,13 @@ struct GeneratedRobot
   const char * const * dofNames;
   const char * forwardDynamicsAlgorithm;
   bool hasForwardDynamics;   ///< false: singular mass matrix, the forwardDynamics* pointers are null
-  GeneratedFunctions<double> d;
+  GeneratedFunctions<double> d;   ///< the full model (NAME::independent: mimic joints as dofs)
   GeneratedFunctions<float> f;
+  /// The robot's own API (namespace NAME): mimic joints coupled, the same as d without mimic joints.
+  int coupledNq, coupledNv;
+  const char * const * coupledDofNames;
+  bool coupledHasForwardDynamics;
+  GeneratedFunctions<double> coupled;
 };
 
 } // namespace rbdgentest

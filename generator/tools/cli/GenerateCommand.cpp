@@ -21,6 +21,7 @@ Command addGenerateCommand(CLI::App & app)
     std::string outDir, ns, scene, depfile;
     bool strict = false;
     bool derivatives = false;
+    bool independentMimic = false;
   };
   auto o = std::make_shared<Options>();
   CLI::App * cmd = app.add_subcommand("generate", "emit NS/dynamics.hpp for the robot (or the scene) into --out DIR");
@@ -35,6 +36,9 @@ Command addGenerateCommand(CLI::App & app)
   cmd->add_flag("--derivatives", o->derivatives,
                 "also emit inverse_dynamics_derivatives(q, alpha, alphaD) and forward_dynamics_derivatives(q, alpha, tau) "
                 "(d/dq in the tangent space, d/dalpha, M^-1)");
+  cmd->add_flag("--independent-mimic", o->independentMimic,
+                "mimic joints as independent joints with their own dofs (default: coupled to the joints they follow, "
+                "q = multiplier q_followed + offset, not dofs; the full model is then in NS::independent)");
   cmd->add_option("--depfile", o->depfile, "also write a Makefile-syntax depfile (header: inputs) for the build system");
   return {cmd,
           [o] {
@@ -44,6 +48,7 @@ Command addGenerateCommand(CLI::App & app)
             opt.scene = o->scene;
             opt.strict = o->strict;
             opt.derivatives = o->derivatives;
+            opt.independentMimic = o->independentMimic;
             opt.floatingBase = o->robot.floatingBase;
             opt.baseLink = o->robot.baseLink;
             opt.outDir = o->outDir;

@@ -63,7 +63,8 @@ struct JointDynamics
   double damping = 0, friction = 0;
 };
 
-/// <mimic joint multiplier offset>: q = multiplier * q_joint + offset (recorded, not enforced).
+/// <mimic joint multiplier offset>: q = multiplier * q_joint + offset (coupled by coupleMimics(),
+/// rbd/parsers/MimicCoupling.h; the MultiBody keeps the mimic joint as a joint of its own).
 struct Mimic
 {
   std::string joint;
@@ -102,8 +103,7 @@ struct ParserResult
   std::map<std::string, Mimic> mimics;           ///< joints with a <mimic> element
   std::string name;                              ///< <robot name>
   /// "<file>: <element> '<name>': <text>": urdfdom's warnings, inertias violating the triangle
-  /// inequality, mimic joints (not fixed) loaded as independent joints, a URDF floating joint used
-  /// as the floating base. (Mass matrix hazards are rbdgen's checks, generator/src/model/MassMatrixChecks.h.)
+  /// inequality, a URDF floating joint used as the floating base (mimics: coupleMimics()). (Mass matrix hazards are rbdgen's checks, generator/src/model/MassMatrixChecks.h.)
   std::vector<std::string> warnings;
   /// X_b_j per body: from the original URDF link frame to the MultiBody body frame
   /// (identity except for the bodies moved by backward joints when baseLink is not the root).

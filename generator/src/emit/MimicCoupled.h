@@ -1,0 +1,23 @@
+#pragma once
+// The coupled API of a robot with mimic joints (templates/mimic_coupled.hpp.in): the plain
+// header's functions in the coupled coordinates, on top of the full model emitted in
+// `<namespace>::independent`.
+#include <string>
+#include <vector>
+
+#include <rbd/parsers/MimicCoupling.h>
+
+#include "../model/RobotModel.h"
+
+namespace rbdgen::emit
+{
+
+/// The joints of the full model that keep the coupled mass matrix singular: the massless-subtree
+/// joints whose coupled coordinate moves only massless links (every joint that follows it massless too).
+std::vector<std::string> coupledMasslessJoints(const RobotModel & rm, const rbd::parsers::MimicCoupling & c);
+
+/// The coupled section, appended after the full model's header (whose namespace is ns::independent).
+std::string mimicCoupledSection(const rbd::parsers::MimicCoupling & c, const std::string & ns, bool forwardDynamics,
+                                bool derivatives);
+
+} // namespace rbdgen::emit

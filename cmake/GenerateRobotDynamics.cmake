@@ -3,13 +3,13 @@
 #   find_package(rbdgen CONFIG REQUIRED)
 #   generate_robot_dynamics(TARGET panda_dynamics URDF robots/panda.urdf
 #                           [NAMESPACE panda] [FLOATING_BASE] [BASE_LINK link] [OUTPUT_DIR dir] [STRICT]
-#                           [DERIVATIVES] [INDEPENDENT_MIMIC] [PYTHON_MODULE module])
+#                           [DERIVATIVES] [INDEPENDENT_MIMIC] [INSTANTIATE] [PYTHON_MODULE module])
 #   generate_robot_dynamics(TARGET quadruped_sim SCENE scenes/quadruped_ground.xml
 #                           [NAMESPACE ns] [OUTPUT_DIR dir] [STRICT])
 #   target_link_libraries(my_controller PRIVATE panda_dynamics)
 #   // #include <panda/dynamics.hpp>
 #
-# Defines the INTERFACE library TARGET (include directory + Eigen). The header
+# Defines the INTERFACE library TARGET (include directory + Eigen; STATIC with INSTANTIATE). The header
 # <OUTPUT_DIR>/<NAMESPACE>/dynamics.hpp is regenerated when the URDF (or the scene, or the URDF
 # the scene names: rbdgen writes a depfile) or the rbdgen executable (whose templates are built in)
 # changes, and only then. With SCENE the header is specialised to the scene's effects; the URDF,
@@ -24,6 +24,9 @@
 # inverse_dynamics_derivatives() and forward_dynamics_derivatives() (rbdgen generate --derivatives).
 # Mimic joints are coupled to the joints they follow (not dofs; the full model is in NS::independent);
 # INDEPENDENT_MIMIC keeps them as independent joints with their own dofs (rbdgen --independent-mimic).
+# INSTANTIATE (URDF only): TARGET is a STATIC library compiling <NAMESPACE>/dynamics.cpp, every function
+# instantiated there for float and double and declared `extern template` in the header, so that the
+# robot's code is compiled once rather than in every translation unit that includes the header.
 #
 # PYTHON_MODULE module (URDF only): also a pybind11 module target `module` (`import module`;
 # module.robot() is the object of rbdgen.compile: the API of rbdgen.Robot, with the derivatives when
@@ -50,7 +53,7 @@ function(_rbdgen_identifier out text)
 endfunction()
 
 function(generate_robot_dynamics)
-  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE;STRICT;DERIVATIVES;INDEPENDENT_MIMIC" "TARGET;URDF;SCENE;NAMESPACE;BASE_LINK;OUTPUT_DIR;PYTHON_MODULE" "")
+  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE;STRICT;DERIVATIVES;INDEPENDENT_MIMIC;INSTANTIATE" "TARGET;URDF;SCENE;NAMESPACE;BASE_LINK;OUTPUT_DIR;PYTHON_MODULE" "")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "generate_robot_dynamics: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
@@ -111,6 +114,14 @@ function(generate_robot_dynamics)
   if(arg_INDEPENDENT_MIMIC)
     list(APPEND options --independent-mimic)
   endif()
+  set(outputs "${header}")
+  if(arg_INSTANTIATE)
+    if(arg_SCENE)
+      message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): INSTANTIATE takes a URDF, not a SCENE")
+    endif()
+    list(APPEND options --instantiate)
+    list(APPEND outputs "${outdir}/${ns}/dynamics.cpp")
+  endif()
   if(arg_BASE_LINK)
     list(APPEND options --base-link "${arg_BASE_LINK}")
   endif()
@@ -130,18 +141,25 @@ function(generate_robot_dynamics)
       COMMENT "rbdgen: ${arg_SCENE} -> ${ns}/dynamics.hpp"
       VERBATIM)
   else()
-    add_custom_command(OUTPUT "${header}"
+    add_custom_command(OUTPUT ${outputs}
       COMMAND ${tool} generate "${urdf}" ${options}
       DEPENDS "${urdf}" ${tool}
       COMMENT "rbdgen: ${arg_URDF} -> ${ns}/dynamics.hpp"
       VERBATIM)
   endif()
   add_custom_target(${arg_TARGET}_generate DEPENDS "${header}")
-  add_library(${arg_TARGET} INTERFACE)
+  if(arg_INSTANTIATE) # a static library: the robot's code compiled once, in dynamics.cpp
+    add_library(${arg_TARGET} STATIC "${outdir}/${ns}/dynamics.cpp")
+    set_target_properties(${arg_TARGET} PROPERTIES POSITION_INDEPENDENT_CODE ON) # also into shared objects
+    set(scope PUBLIC)
+  else()
+    add_library(${arg_TARGET} INTERFACE)
+    set(scope INTERFACE)
+  endif()
   add_dependencies(${arg_TARGET} ${arg_TARGET}_generate)
-  target_include_directories(${arg_TARGET} INTERFACE "$<BUILD_INTERFACE:${outdir}>")
-  target_link_libraries(${arg_TARGET} INTERFACE Eigen3::Eigen)
-  target_compile_features(${arg_TARGET} INTERFACE cxx_std_17)
+  target_include_directories(${arg_TARGET} ${scope} "$<BUILD_INTERFACE:${outdir}>")
+  target_link_libraries(${arg_TARGET} ${scope} Eigen3::Eigen)
+  target_compile_features(${arg_TARGET} ${scope} cxx_std_17)
   set_target_properties(${arg_TARGET} PROPERTIES RBDGEN_HEADER "${header}" RBDGEN_NAMESPACE "${ns}")
 
   if(arg_PYTHON_MODULE)

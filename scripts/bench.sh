@@ -9,7 +9,8 @@
 # configures DIR/gcc and DIR/clang (default DIR: build-bench) with -DRBDGEN_BUILD_BENCH=ON
 # -DRBDGEN_BUILD_TESTS=OFF -march=native, builds, runs every bench_<robot> (the g++ build: all
 # implementations; the clang++ build: the generated code only), the cost model (bench_costs),
-# callgrind instruction counts and the compile time of talos_reduced's header, then writes
+# callgrind instruction counts, the compile time of talos_reduced's header and of every robot's header at g++ -O2
+# (bench/tools/header_costs.sh: lines, seconds, peak MB -> bench/results/latest-headers.md), then writes
 #   bench/results/<date>-<cpu>.md, .csv, bench/results/latest.md (and prints the table).
 # Exit status: non-zero if a build fails or an implementation disagrees with the runtime.
 # --quick: one repetition, short runs, no callgrind, no compile time (a smoke run).
@@ -144,6 +145,10 @@ fi
 
 results="$repo/bench/results"
 mkdir -p "$results"
+if [ $compile_time = 1 ]; then
+  # Every robot's header: lines, g++ -O2 compile time and memory (bench/results/latest-headers.md).
+  "$repo/bench/tools/header_costs.sh" "${dir[gcc]}" "$results/latest-headers.md"
+fi
 slug="$(echo "$cpu" | tr -c 'A-Za-z0-9\n' '-' | sed 's/--*/-/g; s/-$//')"
 pin_md=()
 [ -n "$pinocchio" ] && pin_md=(--pinocchio-md "$results/$date_iso-$slug-pinocchio.md")

@@ -43,6 +43,11 @@ UrdfModel::UrdfModel(const std::string & path, bool floatingBase, const std::str
   mb_ = r.mb;
   name_ = r.name;
   warnings_ = r.warnings;
+  coupling_ = rbd::parsers::coupleMimics(r, path, &warnings_);
+  if(coupling_.empty()) coupling_ = rbd::parsers::independentJoints(mb_);
+  G_ = Eigen::MatrixXd::Zero(mb_.nrDof(), nv());
+  for(std::size_t k = 0; k < coupling_.vSource.size(); ++k)
+    G_(static_cast<Eigen::Index>(k), coupling_.vSource[k]) = coupling_.vMultiplier[k];
   for(const auto & b : mb_.bodies())
   {
     const auto it = r.bodyBaseTransforms.find(b.name());
@@ -50,7 +55,7 @@ UrdfModel::UrdfModel(const std::string & path, bool floatingBase, const std::str
   }
 }
 
-std::vector<std::string> UrdfModel::dofNames() const { return jointDofNames(mb_); }
+std::vector<std::string> UrdfModel::dofNames() const { return coupling_.dofJoints; }
 
 std::vector<std::string> UrdfModel::bodyNames() const
 {
@@ -68,18 +73,22 @@ UrdfModel::Workspace UrdfModel::makeWorkspace() const
                rbd::ForwardDynamicsDerivatives(mb_),
                {},
                {},
-               Eigen::VectorXd::Zero(nv())};
+               Eigen::VectorXd::Zero(mb_.nrDof()),
+               Eigen::VectorXd::Zero(mb_.nrParams()),
+               Eigen::VectorXd::Zero(mb_.nrDof())};
   ws.jacobians.resize(static_cast<std::size_t>(nbodies()));
   return ws;
 }
 
 void UrdfModel::setState(Workspace & ws, const double * q, const double * v) const
 {
-  rbd::vectorToParam<double>(ConstVector(q, nq()), ws.mbc.q);
+  for(std::size_t k = 0; k < coupling_.qSource.size(); ++k) // q_full = G q + o
+    ws.qFull(static_cast<Eigen::Index>(k)) = coupling_.qMultiplier[k] * q[coupling_.qSource[k]] + coupling_.qOffset[k];
+  rbd::vectorToParam<double>(ws.qFull, ws.mbc.q);
   rbd::forwardKinematics(mb_, ws.mbc);
   if(v)
   {
-    rbd::vectorToDof<double>(ConstVector(v, nv()), ws.mbc.alpha);
+    rbd::vectorToDof<double>(expandTangent(v), ws.mbc.alpha);
     rbd::forwardVelocity(mb_, ws.mbc);
   }
 }
@@ -93,26 +102,43 @@ void UrdfModel::forwardKinematics(Workspace & ws, const double * q, double * out
 void UrdfModel::inverseDynamics(Workspace & ws, const double * q, const double * v, const double * a, double * tau) const
 {
   setState(ws, q, v);
-  rbd::vectorToDof<double>(ConstVector(a, nv()), ws.mbc.alphaD);
+  rbd::vectorToDof<double>(expandTangent(a), ws.mbc.alphaD);
   ws.id.inverseDynamics(mb_, ws.mbc);
   rbd::dofToVector<double>(ws.mbc.jointTorque, ws.tau);
-  Eigen::Map<Eigen::VectorXd>(tau, nv()) = ws.tau;
+  Eigen::Map<Eigen::VectorXd>(tau, nv()) = G_.transpose() * ws.tau;
 }
 
 void UrdfModel::massMatrix(Workspace & ws, const double * q, double * H) const
 {
   setState(ws, q, nullptr);
   ws.fd.computeH(mb_, ws.mbc);
-  Eigen::Map<RowMatrix>(H, nv(), nv()) = ws.fd.H();
+  Eigen::Map<RowMatrix>(H, nv(), nv()) = G_.transpose() * ws.fd.H() * G_;
+}
+
+Eigen::LDLT<Eigen::MatrixXd> UrdfModel::coupledMassMatrix(Workspace & ws, Eigen::VectorXd & C) const
+{
+  ws.fd.computeH(mb_, ws.mbc);
+  ws.fd.computeC(mb_, ws.mbc);
+  C = G_.transpose() * ws.fd.C();
+  return Eigen::LDLT<Eigen::MatrixXd>(G_.transpose() * ws.fd.H() * G_);
 }
 
 void UrdfModel::forwardDynamics(Workspace & ws, const double * q, const double * v, const double * tau, double * a) const
 {
   setState(ws, q, v);
-  rbd::vectorToDof<double>(ConstVector(tau, nv()), ws.mbc.jointTorque);
-  ws.fd.forwardDynamics(mb_, ws.mbc); // throws std::runtime_error when the result is not finite
-  rbd::dofToVector<double>(ws.mbc.alphaD, ws.tau);
-  Eigen::Map<Eigen::VectorXd>(a, nv()) = ws.tau;
+  Eigen::Map<Eigen::VectorXd> out(a, nv());
+  if(coupling_.empty())
+  {
+    rbd::vectorToDof<double>(ConstVector(tau, nv()), ws.mbc.jointTorque);
+    ws.fd.forwardDynamics(mb_, ws.mbc); // throws std::runtime_error when the result is not finite
+    rbd::dofToVector<double>(ws.mbc.alphaD, ws.tau);
+    out = ws.tau;
+    return;
+  }
+  Eigen::VectorXd C;
+  const Eigen::LDLT<Eigen::MatrixXd> H = coupledMassMatrix(ws, C);
+  out = H.solve(ConstVector(tau, nv()) - C);
+  if(!out.allFinite()) throw std::runtime_error("forward dynamics: joint acceleration is not finite");
 }
 
 void UrdfModel::jacobian(Workspace & ws, int body, const double * q, double * J) const
@@ -123,7 +149,7 @@ void UrdfModel::jacobian(Workspace & ws, int body, const double * q, double * J)
   // the link origin, in the MultiBody body frame
   if(!jac) jac.emplace(mb_, mb_.body(body).name(), X_body_link_[k].translation());
   jac->fullJacobian(mb_, jac->jacobian(mb_, ws.mbc), ws.fullJacobian);
-  Eigen::Map<RowMatrix>(J, 6, nv()) = ws.fullJacobian;
+  Eigen::Map<RowMatrix>(J, 6, nv()) = ws.fullJacobian * G_;
 }
 
 void UrdfModel::centerOfMass(Workspace & ws, const double * q, double * c) const
@@ -136,22 +162,37 @@ void UrdfModel::inverseDynamicsDerivatives(Workspace & ws, const double * q, con
                                            double * dtauDq, double * dtauDv) const
 {
   setState(ws, q, v);
-  rbd::vectorToDof<double>(ConstVector(a, nv()), ws.mbc.alphaD);
+  rbd::vectorToDof<double>(expandTangent(a), ws.mbc.alphaD);
   ws.idd.inverseDynamicsDerivatives(mb_, ws.mbc);
-  Eigen::Map<RowMatrix>(dtauDq, nv(), nv()) = ws.idd.dtauDq();
-  Eigen::Map<RowMatrix>(dtauDv, nv(), nv()) = ws.idd.dtauDalpha();
+  Eigen::Map<RowMatrix>(dtauDq, nv(), nv()) = G_.transpose() * ws.idd.dtauDq() * G_;
+  Eigen::Map<RowMatrix>(dtauDv, nv(), nv()) = G_.transpose() * ws.idd.dtauDalpha() * G_;
 }
 
 void UrdfModel::forwardDynamicsDerivatives(Workspace & ws, const double * q, const double * v, const double * tau,
                                            double * a, double * daDq, double * daDv, double * Minv) const
 {
   setState(ws, q, v);
-  rbd::vectorToDof<double>(ConstVector(tau, nv()), ws.mbc.jointTorque);
-  ws.fdd.forwardDynamicsDerivatives(mb_, ws.mbc); // throws std::runtime_error when the result is not finite
-  Eigen::Map<Eigen::VectorXd>(a, nv()) = ws.fdd.alphaD();
-  Eigen::Map<RowMatrix>(daDq, nv(), nv()) = ws.fdd.dalphaDDq();
-  Eigen::Map<RowMatrix>(daDv, nv(), nv()) = ws.fdd.dalphaDDalpha();
-  Eigen::Map<RowMatrix>(Minv, nv(), nv()) = ws.fdd.Minv();
+  if(coupling_.empty())
+  {
+    rbd::vectorToDof<double>(ConstVector(tau, nv()), ws.mbc.jointTorque);
+    ws.fdd.forwardDynamicsDerivatives(mb_, ws.mbc); // throws std::runtime_error when the result is not finite
+    Eigen::Map<Eigen::VectorXd>(a, nv()) = ws.fdd.alphaD();
+    Eigen::Map<RowMatrix>(daDq, nv(), nv()) = ws.fdd.dalphaDDq();
+    Eigen::Map<RowMatrix>(daDv, nv(), nv()) = ws.fdd.dalphaDDalpha();
+    Eigen::Map<RowMatrix>(Minv, nv(), nv()) = ws.fdd.Minv();
+    return;
+  }
+  // alphaD = H^-1 (tau - C), d alphaD = -H^-1 G^T dID_full G at alphaD, d alphaD / d tau = H^-1 (coupled H).
+  Eigen::VectorXd C;
+  const Eigen::LDLT<Eigen::MatrixXd> H = coupledMassMatrix(ws, C);
+  const Eigen::VectorXd alphaD = H.solve(ConstVector(tau, nv()) - C);
+  if(!alphaD.allFinite()) throw std::runtime_error("forward dynamics: joint acceleration is not finite");
+  Eigen::Map<Eigen::VectorXd>(a, nv()) = alphaD;
+  rbd::vectorToDof<double>(G_ * alphaD, ws.mbc.alphaD);
+  ws.idd.inverseDynamicsDerivatives(mb_, ws.mbc);
+  Eigen::Map<RowMatrix>(daDq, nv(), nv()) = -H.solve(G_.transpose() * ws.idd.dtauDq() * G_);
+  Eigen::Map<RowMatrix>(daDv, nv(), nv()) = -H.solve(G_.transpose() * ws.idd.dtauDalpha() * G_);
+  Eigen::Map<RowMatrix>(Minv, nv(), nv()) = H.solve(Eigen::MatrixXd::Identity(nv(), nv()));
 }
 
 // --- SceneModel ----------------------------------------------------------------------------------

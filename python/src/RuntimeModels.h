@@ -5,6 +5,9 @@
 //  - SceneModel: a scene's robot evaluated by rbd::scene::SceneDynamics (its gravity, damping,
 //    friction, armature, contacts; no external wrenches; derivatives included), reentrant, so its
 //    Workspace is empty.
+// A URDF's mimic joints are coupled as in the generated code (rbd/parsers/MimicCoupling.h): the
+// coordinates exclude them, q_full = G q + o, results are the full model's projected (tau = G^T tau_full,
+// H = G^T H_full G, J = J_full G, forward dynamics through the coupled H).
 // Poses and Jacobians are those of the URDF link frames (= the MultiBody body frames except for
 // bodies moved by backward joints, see ParserResult::bodyBaseTransforms), as in the generated code.
 #include <memory>
@@ -14,6 +17,8 @@
 #include <variant>
 #include <vector>
 
+#include <Eigen/Cholesky>
+
 #include <rbd/FD.h>
 #include <rbd/FDDerivatives.h>
 #include <rbd/ID.h>
@@ -21,6 +26,7 @@
 #include <rbd/Jacobian.h>
 #include <rbd/MultiBody.h>
 #include <rbd/MultiBodyConfig.h>
+#include <rbd/parsers/MimicCoupling.h>
 #include <rbd/parsers/urdf.h>
 #include <rbd/scene/SceneDynamics.h>
 
@@ -40,12 +46,13 @@ public:
     std::vector<std::optional<rbd::Jacobian>> jacobians; ///< per body, made on first use
     Eigen::MatrixXd fullJacobian;
     Eigen::VectorXd tau;
+    Eigen::VectorXd qFull, vFull; ///< expanded coordinates (mimic joints included)
   };
 
   UrdfModel(const std::string & path, bool floatingBase, const std::string & baseLink);
 
-  int nq() const { return mb_.nrParams(); }
-  int nv() const { return mb_.nrDof(); }
+  int nq() const { return coupling_.nq; }
+  int nv() const { return coupling_.nv; }
   int nbodies() const { return mb_.nrBodies(); }
   bool hasForwardDynamics() const { return true; }
   const std::string & name() const { return name_; }
@@ -69,10 +76,16 @@ public:
   const std::vector<std::string> & warnings() const { return warnings_; }
 
 private:
-  /// q (and v when given) into ws.mbc, then forward kinematics (and velocity).
+  /// q (and v when given) expanded into ws.mbc, then forward kinematics (and velocity).
   void setState(Workspace & ws, const double * q, const double * v) const;
+  /// G x for a coupled tangent vector x (mimic joints' entries filled in).
+  Eigen::VectorXd expandTangent(const double * x) const { return G_ * Eigen::Map<const Eigen::VectorXd>(x, nv()); }
+  /// Forward dynamics of the coupled system at the state in ws.mbc (velocity set): G^T H G and G^T C.
+  Eigen::LDLT<Eigen::MatrixXd> coupledMassMatrix(Workspace & ws, Eigen::VectorXd & C) const;
 
   rbd::MultiBody mb_;
+  rbd::parsers::MimicCoupling coupling_;
+  Eigen::MatrixXd G_; ///< full nv x coupled nv
   std::string name_;
   std::vector<sva::PTransformd> X_body_link_; ///< per body: MultiBody body frame -> URDF link frame
   std::vector<std::string> warnings_;

@@ -83,7 +83,8 @@ TEST_F(CliTest, GenerateShowsTheLoadersWarningsAndSucceeds)
   EXPECT_EQ(r.err.find("'follower'"), std::string::npos) << r.err;
   EXPECT_EQ(stderrLines(r.err).size(), 1u) << r.err;
   const std::string header = readFile(dir() / "out/mim/dynamics.hpp");
-  EXPECT_EQ(headerInt(header, "nv"), 2); // lead and orphan; follower = 2 lead
+  EXPECT_EQ(headerInt(header, "nv"), 3); // the full model, NS::independent, first
+  EXPECT_NE(header.find("constexpr int nv = 2;"), std::string::npos); // the API: lead and orphan; follower = 2 lead
   EXPECT_NE(header.find("\"follower = 2 * lead + 0\""), std::string::npos);
   // Warnings do not fail --strict either: they are not mass matrix hazards.
   EXPECT_EQ(rbdgen({"generate", "mim.urdf", "--out", "out", "--strict"}, dir()).code, 0);

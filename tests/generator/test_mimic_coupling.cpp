@@ -114,7 +114,10 @@ TEST_P(MimicCoupling, EqualsTheFullModelProjected)
   const Coupling c = coupling(ref.robot);
   ASSERT_EQ(g.coupledNq, c.Gq.cols());
   ASSERT_EQ(g.coupledNv, c.Gv.cols());
-  if(c.mimics == 0) EXPECT_EQ(g.coupledNv, g.nv);
+  if(c.mimics == 0)
+  {
+    EXPECT_EQ(g.coupledNv, g.nv);
+  }
   const int nq = g.coupledNq, nv = g.coupledNv, nvf = g.nv, nb = g.nbodies;
   const Eigen::MatrixXd & G = c.Gv;
   rbdtest::Rng rng(31);

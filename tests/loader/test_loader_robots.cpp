@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <rbd/parsers/MimicCoupling.h>
+
 #include "LoaderTestUtil.h"
 #include "TestModels.h"
 
@@ -138,7 +140,12 @@ TEST(LoaderRobots, SharedRobotsMimicAndDampingKept)
   int damped = 0;
   for(const auto & [name, d] : panda.dynamics) damped += d.damping != 0;
   EXPECT_EQ(damped, 9);
-  bool warned = false;
-  for(const auto & w : panda.warnings) warned |= w.find("panda_finger_joint2") != std::string::npos;
-  EXPECT_TRUE(warned);
+  for(const auto & w : panda.warnings) EXPECT_EQ(w.find("panda_finger_joint2"), std::string::npos) << w;
+  // Coupled: the finger follows the other one (multiplier 1, offset 0), one dof less.
+  std::vector<std::string> warnings;
+  const auto c = rbd::parsers::coupleMimics(panda, "panda.urdf", &warnings);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_EQ(c.nv, panda.mb.nrDof() - 1);
+  ASSERT_EQ(c.coupled.size(), 1u);
+  EXPECT_EQ(c.coupled[0], "panda_finger_joint2 = 1 * panda_finger_joint1 + 0");
 }

@@ -1,5 +1,6 @@
 """rbdgen.compile: the generated code, compiled and imported, equals the runtime; the cache makes the
-second call instant. One fixed-base and one floating-base robot (each compile takes seconds)."""
+second call instant. One fixed-base robot with mimic joints (coupled: the runtime and the generated
+module agree on the coupled coordinates) and one floating-base robot (each compile takes seconds)."""
 import os
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -8,12 +9,14 @@ import numpy as np
 import pytest
 
 import rbdgen
-from conftest import ROBOTS, SCENES, random_states, rel_err
+from conftest import ROBOTS, ROOT, SCENES, random_states, rel_err
 
 BOUND = 1e-12  # max |generated - runtime| / max(1, max |runtime|), as tests/generator/test_generated
 
 
-ROBOTS_COMPILED = [("double_pendulum.urdf", False), ("quadruped.urdf", True)]
+# tests/generator/mimic_gripper.urdf: 10 joints, 4 mimic joints coupled (a chain, siblings, across subtrees)
+MIMIC_GRIPPER = ROOT / "tests" / "generator" / "mimic_gripper.urdf"
+ROBOTS_COMPILED = [(MIMIC_GRIPPER, False), (ROBOTS / "quadruped.urdf", True)]
 
 
 @pytest.fixture(scope="module")
@@ -38,7 +41,7 @@ def first_compiles(cache, heavy_pendulum):
         if urdf == heavy_pendulum:  # (and without derivatives)
             robot = rbdgen.compile(urdf, floating_base=floating, derivatives=False, cache=cache)
         else:
-            robot = rbdgen.compile(ROBOTS / urdf, floating_base=floating, cache=cache)
+            robot = rbdgen.compile(urdf, floating_base=floating, cache=cache)
         return robot, time.perf_counter() - start
 
     jobs = ROBOTS_COMPILED + [(heavy_pendulum, False)]
@@ -47,11 +50,11 @@ def first_compiles(cache, heavy_pendulum):
         return {job: f.result() for job, f in futures.items()}
 
 
-@pytest.fixture(scope="module", params=ROBOTS_COMPILED, ids=["double_pendulum", "quadruped_floating"])
+@pytest.fixture(scope="module", params=ROBOTS_COMPILED, ids=["mimic_gripper", "quadruped_floating"])
 def pair(request, first_compiles):
     urdf, floating = request.param
     compiled, first = first_compiles[(urdf, floating)]
-    runtime = rbdgen.Robot.from_urdf(ROBOTS / urdf, floating_base=floating)
+    runtime = rbdgen.Robot.from_urdf(urdf, floating_base=floating)
     return compiled, runtime, floating, first
 
 
@@ -63,6 +66,8 @@ def test_same_robot(pair):
     assert compiled.name == runtime.name
     assert compiled.has_forward_dynamics
     assert compiled.has_derivatives
+    if not floating:  # the gripper: 10 joints, finger_r, knuckle, camera and flap follow others
+        assert compiled.nv == 6 and "finger_r_joint" not in compiled.dof_names
 
 
 def test_generated_equals_runtime(pair):
@@ -118,9 +123,9 @@ def test_compiled_batch_threads_and_errors(pair):
 
 def test_second_call_is_instant(pair, cache):
     compiled, runtime, floating, first = pair
-    urdf = "double_pendulum.urdf" if not floating else "quadruped.urdf"
+    urdf = MIMIC_GRIPPER if not floating else ROBOTS / "quadruped.urdf"
     start = time.perf_counter()
-    again = rbdgen.compile(ROBOTS / urdf, floating_base=floating, cache=cache)
+    again = rbdgen.compile(urdf, floating_base=floating, cache=cache)
     second = time.perf_counter() - start
     assert second < 0.1 and second < first / 20, (first, second)
     q = np.zeros(runtime.nq)

@@ -97,6 +97,11 @@ std::vector<std::string> coupledMasslessJoints(const RobotModel & rm, const rbd:
   return res;
 }
 
+bool coupledForwardDynamics(const RobotModel & rm, const rbd::parsers::MimicCoupling & c)
+{
+  return rm.checks.stackedFree.empty() && coupledMasslessJoints(rm, c).empty();
+}
+
 std::string mimicCoupledSection(const rbd::parsers::MimicCoupling & c, const std::string & ns, bool forwardDynamics,
                                 bool derivatives)
 {

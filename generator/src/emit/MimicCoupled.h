@@ -16,6 +16,9 @@ namespace rbdgen::emit
 /// joints whose coupled coordinate moves only massless links (every joint that follows it massless too).
 std::vector<std::string> coupledMasslessJoints(const RobotModel & rm, const rbd::parsers::MimicCoupling & c);
 
+/// Whether the coupled system has forward dynamics (its mass matrix is regular).
+bool coupledForwardDynamics(const RobotModel & rm, const rbd::parsers::MimicCoupling & c);
+
 /// The coupled section, appended after the full model's header (whose namespace is ns::independent).
 std::string mimicCoupledSection(const rbd::parsers::MimicCoupling & c, const std::string & ns, bool forwardDynamics,
                                 bool derivatives);

@@ -22,6 +22,7 @@ Command addGenerateCommand(CLI::App & app)
     bool strict = false;
     bool derivatives = false;
     bool independentMimic = false;
+    bool instantiate = false;
   };
   auto o = std::make_shared<Options>();
   CLI::App * cmd = app.add_subcommand("generate", "emit NS/dynamics.hpp for the robot (or the scene) into --out DIR");
@@ -39,6 +40,9 @@ Command addGenerateCommand(CLI::App & app)
   cmd->add_flag("--independent-mimic", o->independentMimic,
                 "mimic joints as independent joints with their own dofs (default: coupled to the joints they follow, "
                 "q = multiplier q_followed + offset, not dofs; the full model is then in NS::independent)");
+  cmd->add_flag("--instantiate", o->instantiate,
+                "also write NS/dynamics.cpp with every function instantiated for float and double, and declare them "
+                "extern template in the header: the robot's code is compiled once, in that file (link it)");
   cmd->add_option("--depfile", o->depfile, "also write a Makefile-syntax depfile (header: inputs) for the build system");
   return {cmd,
           [o] {
@@ -49,6 +53,7 @@ Command addGenerateCommand(CLI::App & app)
             opt.strict = o->strict;
             opt.derivatives = o->derivatives;
             opt.independentMimic = o->independentMimic;
+            opt.instantiate = o->instantiate;
             opt.floatingBase = o->robot.floatingBase;
             opt.baseLink = o->robot.baseLink;
             opt.outDir = o->outDir;

@@ -1,0 +1,18 @@
+#pragma once
+// Explicit instantiation of a plain header's functions for float and double
+// (templates/instantiations.hpp.in), for `rbdgen generate --instantiate`: the header ends with
+// their `extern template` declarations and NS/dynamics.cpp defines them, so that a build compiles
+// the robot's code once instead of in every translation unit that includes the header.
+#include <string>
+
+namespace rbdgen::emit
+{
+
+/// The header's closing section: `extern template` declarations for float and double.
+std::string externInstantiations(const std::string & ns, bool forwardDynamics, bool derivatives);
+
+/// NS/dynamics.cpp: the explicit instantiation definitions (first line: `provenance`).
+std::string instantiationSource(const std::string & ns, bool forwardDynamics, bool derivatives,
+                                const std::string & provenance);
+
+} // namespace rbdgen::emit

@@ -24,8 +24,8 @@
 # inverse_dynamics_derivatives() and forward_dynamics_derivatives() (rbdgen generate --derivatives).
 # Mimic joints are coupled to the joints they follow (not dofs; the full model is in NS::independent);
 # INDEPENDENT_MIMIC keeps them as independent joints with their own dofs (rbdgen --independent-mimic).
-# INSTANTIATE (URDF only): TARGET is a STATIC library compiling <NAMESPACE>/dynamics.cpp, every function
-# instantiated there for float and double and declared `extern template` in the header, so that the
+# INSTANTIATE (URDF only): TARGET is a STATIC library compiling <NAMESPACE>/dynamics_double.cpp and
+# dynamics_float.cpp, every function instantiated there for double and float and declared `extern template` in the header, so that the
 # robot's code is compiled once rather than in every translation unit that includes the header.
 #
 # PYTHON_MODULE module (URDF only): also a pybind11 module target `module` (`import module`;
@@ -120,7 +120,7 @@ function(generate_robot_dynamics)
       message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): INSTANTIATE takes a URDF, not a SCENE")
     endif()
     list(APPEND options --instantiate)
-    list(APPEND outputs "${outdir}/${ns}/dynamics.cpp")
+    list(APPEND outputs "${outdir}/${ns}/dynamics_double.cpp" "${outdir}/${ns}/dynamics_float.cpp")
   endif()
   if(arg_BASE_LINK)
     list(APPEND options --base-link "${arg_BASE_LINK}")
@@ -148,8 +148,8 @@ function(generate_robot_dynamics)
       VERBATIM)
   endif()
   add_custom_target(${arg_TARGET}_generate DEPENDS "${header}")
-  if(arg_INSTANTIATE) # a static library: the robot's code compiled once, in dynamics.cpp
-    add_library(${arg_TARGET} STATIC "${outdir}/${ns}/dynamics.cpp")
+  if(arg_INSTANTIATE) # a static library: the robot's code compiled once, in dynamics_{double,float}.cpp
+    add_library(${arg_TARGET} STATIC "${outdir}/${ns}/dynamics_double.cpp" "${outdir}/${ns}/dynamics_float.cpp")
     set_target_properties(${arg_TARGET} PROPERTIES POSITION_INDEPENDENT_CODE ON) # also into shared objects
     set(scope PUBLIC)
   else()

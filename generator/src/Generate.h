@@ -27,8 +27,8 @@ struct GenerateOptions
   /// Mimic joints as independent joints with their own dofs (the URDF's coupling ignored); default:
   /// coupled (rbd/parsers/MimicCoupling.h), the full model then in namespace <ns>::independent.
   bool independentMimic = false;
-  /// Also write <ns>/dynamics.cpp with the explicit instantiations for float and double, and end the
-  /// header with their `extern template` declarations (URDF only).
+  /// Also write <ns>/dynamics_double.cpp and dynamics_float.cpp with the explicit instantiations, and
+  /// end the header with their `extern template` declarations (URDF only).
   bool instantiate = false;
 };
 

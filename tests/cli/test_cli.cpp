@@ -150,18 +150,19 @@ TEST_F(CliTest, InstantiateWritesTheInstantiationsAndDeclaresThemExtern)
 {
   const Result r = rbdgen({"generate", robot("pendulum").string(), "--out", "out", "--instantiate"}, dir());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(listTree(dir() / "out"), (std::vector<std::string>{"pendulum", "pendulum/dynamics.cpp", "pendulum/dynamics.hpp"}));
+  EXPECT_EQ(listTree(dir() / "out"), (std::vector<std::string>{"pendulum", "pendulum/dynamics.hpp", "pendulum/dynamics_double.cpp",
+                                                                "pendulum/dynamics_float.cpp"}));
   const std::string header = readFile(dir() / "out/pendulum/dynamics.hpp");
-  const std::string source = readFile(dir() / "out/pendulum/dynamics.cpp");
-  EXPECT_NE(header.find("// Options: fixed base, instantiated in dynamics.cpp"), std::string::npos);
+  EXPECT_NE(header.find("// Options: fixed base, instantiated in dynamics_double.cpp and dynamics_float.cpp"), std::string::npos);
   // every extern declaration of the header has its definition in the source, for double and float
   for(const std::string scalar : {"double", "float"})
   {
     const std::string decl = "extern template Tangent<" + scalar + "> forward_dynamics<" + scalar + ">(";
     EXPECT_NE(header.find(decl), std::string::npos) << decl;
+    const std::string source = readFile(dir() / ("out/pendulum/dynamics_" + scalar + ".cpp"));
     EXPECT_NE(source.find(decl.substr(7)), std::string::npos) << decl;
+    EXPECT_NE(source.find("#include <pendulum/dynamics.hpp>"), std::string::npos);
   }
-  EXPECT_NE(source.find("#include <pendulum/dynamics.hpp>"), std::string::npos);
   // A scene has another API: --instantiate takes a URDF.
   const Result bad = rbdgen({"generate", "--scene", (fs::path(RBDGEN_SOURCE_DIR) / "scenes/pendulum_damped.xml").string(),
                              "--out", "o2", "--instantiate"},

@@ -1,6 +1,7 @@
 // generate_robot_dynamics(... INSTANTIATE): ur5e_inst's functions for double and float come from the
-// generated dynamics.cpp (extern template here: this file instantiates none of them), equal to the
-// header-only build of the same URDF (ur5e, checked against the runtime by test_generated).
+// generated dynamics_double.cpp and dynamics_float.cpp (extern template here: this file instantiates
+// none of them; `nm` shows them undefined in its object), equal to the header-only build of the same
+// URDF (ur5e, checked against the runtime by test_generated).
 #include <random>
 
 #include <gtest/gtest.h>

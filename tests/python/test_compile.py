@@ -59,7 +59,7 @@ def pair(request, first_compiles):
 
 
 def test_same_robot(pair):
-    compiled, runtime, _, _ = pair
+    compiled, runtime, floating, _ = pair
     assert (compiled.nq, compiled.nv) == (runtime.nq, runtime.nv)
     assert compiled.dof_names == runtime.dof_names
     assert compiled.body_names == runtime.body_names

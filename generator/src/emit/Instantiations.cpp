@@ -1,5 +1,7 @@
 #include "Instantiations.h"
 
+#include <vector>
+
 #include <fmt/format.h>
 
 #include "Template.h"
@@ -10,8 +12,8 @@ namespace rbdgen::emit
 namespace
 {
 
-/// The instantiation lines for float and double, prefixed by `kw` ("template" or "extern template").
-std::string lines(const std::string & kw, bool forwardDynamics, bool derivatives)
+/// The instantiation lines for the scalars, prefixed by `kw` ("template" or "extern template").
+std::string lines(const std::string & kw, const std::vector<std::string> & scalars, bool forwardDynamics, bool derivatives)
 {
   const std::string text = selectSections(templateText("instantiations.hpp.in"),
                                           {{"forward_dynamics", forwardDynamics},
@@ -19,7 +21,7 @@ std::string lines(const std::string & kw, bool forwardDynamics, bool derivatives
                                            {"fd_derivatives", derivatives && forwardDynamics}},
                                           "templates/instantiations.hpp.in");
   std::string s;
-  for(const char * scalar : {"double", "float"}) s += fillTemplate(text, {{"kw", kw}, {"S", scalar}}, "templates/instantiations.hpp.in");
+  for(const std::string & scalar : scalars) s += fillTemplate(text, {{"kw", kw}, {"S", scalar}}, "templates/instantiations.hpp.in");
   return s;
 }
 
@@ -27,19 +29,19 @@ std::string lines(const std::string & kw, bool forwardDynamics, bool derivatives
 
 std::string externInstantiations(const std::string & ns, bool forwardDynamics, bool derivatives)
 {
-  return fmt::format("\n// Instantiated for double and float once, in {0}/dynamics.cpp (rbdgen generate --instantiate):\n"
-                     "// link it (generate_robot_dynamics(... INSTANTIATE) builds it into the target). Other scalars\n"
-                     "// are instantiated where they are used, as usual.\n"
+  return fmt::format("\n// Instantiated for double and float once, in {0}/dynamics_double.cpp and {0}/dynamics_float.cpp\n"
+                     "// (rbdgen generate --instantiate): link them (generate_robot_dynamics(... INSTANTIATE) builds them\n"
+                     "// into the target). Other scalars are instantiated where they are used, as usual.\n"
                      "namespace {0}\n{{\n{1}}} // namespace {0}\n",
-                     ns, lines("extern template", forwardDynamics, derivatives));
+                     ns, lines("extern template", {"double", "float"}, forwardDynamics, derivatives));
 }
 
-std::string instantiationSource(const std::string & ns, bool forwardDynamics, bool derivatives,
+std::string instantiationSource(const std::string & ns, const std::string & scalar, bool forwardDynamics, bool derivatives,
                                 const std::string & provenance)
 {
-  return fmt::format("{1}\n// The explicit instantiations of {0}/dynamics.hpp for double and float.\n"
+  return fmt::format("{1}\n// The explicit instantiations of {0}/dynamics.hpp for {3}.\n"
                      "#include <{0}/dynamics.hpp>\n\nnamespace {0}\n{{\n{2}}} // namespace {0}\n",
-                     ns, provenance, lines("template", forwardDynamics, derivatives));
+                     ns, provenance, lines("template", {scalar}, forwardDynamics, derivatives), scalar);
 }
 
 } // namespace rbdgen::emit

@@ -41,8 +41,8 @@ Command addGenerateCommand(CLI::App & app)
                 "mimic joints as independent joints with their own dofs (default: coupled to the joints they follow, "
                 "q = multiplier q_followed + offset, not dofs; the full model is then in NS::independent)");
   cmd->add_flag("--instantiate", o->instantiate,
-                "also write NS/dynamics.cpp with every function instantiated for float and double, and declare them "
-                "extern template in the header: the robot's code is compiled once, in that file (link it)");
+                "also write NS/dynamics_double.cpp and NS/dynamics_float.cpp with every function instantiated, and declare "
+                "them extern template in the header: the robot's code is compiled once, in those files (link them)");
   cmd->add_option("--depfile", o->depfile, "also write a Makefile-syntax depfile (header: inputs) for the build system");
   return {cmd,
           [o] {

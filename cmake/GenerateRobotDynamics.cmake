@@ -3,7 +3,7 @@
 #   find_package(rbdgen CONFIG REQUIRED)
 #   generate_robot_dynamics(TARGET panda_dynamics URDF robots/panda.urdf
 #                           [NAMESPACE panda] [FLOATING_BASE] [BASE_LINK link] [OUTPUT_DIR dir] [STRICT]
-#                           [DERIVATIVES] [PYTHON_MODULE module])
+#                           [DERIVATIVES] [BATCH] [PYTHON_MODULE module])
 #   generate_robot_dynamics(TARGET quadruped_sim SCENE scenes/quadruped_ground.xml
 #                           [NAMESPACE ns] [OUTPUT_DIR dir] [STRICT])
 #   target_link_libraries(my_controller PRIVATE panda_dynamics)
@@ -22,6 +22,9 @@
 # "rbdgen: warning: ..." (Ninja and Make show a custom command's output) and never fail it.
 # STRICT: the mass matrix checks are errors instead of warnings. DERIVATIVES: the header also has
 # inverse_dynamics_derivatives() and forward_dynamics_derivatives() (rbdgen generate --derivatives).
+# BATCH (URDF only): also <OUTPUT_DIR>/<NAMESPACE>/batch.hpp, the functions over N states at a time on
+# xsimd packs and threads (rbdgen generate --batch); TARGET then carries xsimd's include directory
+# (Debian: libxsimd-dev; the header only, its CMake package is not used) and Threads::Threads.
 #
 # PYTHON_MODULE module (URDF only): also a pybind11 module target `module` (`import module`;
 # module.robot() is the object of rbdgen.compile: the API of rbdgen.Robot, with the derivatives when
@@ -48,7 +51,7 @@ function(_rbdgen_identifier out text)
 endfunction()
 
 function(generate_robot_dynamics)
-  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE;STRICT;DERIVATIVES" "TARGET;URDF;SCENE;NAMESPACE;BASE_LINK;OUTPUT_DIR;PYTHON_MODULE" "")
+  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE;STRICT;DERIVATIVES;BATCH" "TARGET;URDF;SCENE;NAMESPACE;BASE_LINK;OUTPUT_DIR;PYTHON_MODULE" "")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "generate_robot_dynamics: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
@@ -58,6 +61,9 @@ function(generate_robot_dynamics)
   if(arg_SCENE AND (arg_URDF OR arg_FLOATING_BASE OR arg_BASE_LINK))
     message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): SCENE names the URDF and the base: "
                         "URDF, FLOATING_BASE and BASE_LINK cannot be given with it")
+  endif()
+  if(arg_SCENE AND arg_BATCH)
+    message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): BATCH takes a URDF (scene headers have no batch API yet)")
   endif()
   if(arg_SCENE AND arg_PYTHON_MODULE)
     message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): PYTHON_MODULE takes a URDF (a scene's header has "
@@ -95,6 +101,10 @@ function(generate_robot_dynamics)
     set(outdir "${CMAKE_CURRENT_BINARY_DIR}/${arg_TARGET}")
   endif()
   set(header "${outdir}/${ns}/dynamics.hpp")
+  set(outputs "${header}")
+  if(arg_BATCH)
+    list(APPEND outputs "${outdir}/${ns}/batch.hpp")
+  endif()
 
   set(options --out "${outdir}" --namespace "${ns}")
   if(arg_STRICT)
@@ -105,6 +115,9 @@ function(generate_robot_dynamics)
   endif()
   if(arg_DERIVATIVES)
     list(APPEND options --derivatives)
+  endif()
+  if(arg_BATCH)
+    list(APPEND options --batch)
   endif()
   if(arg_BASE_LINK)
     list(APPEND options --base-link "${arg_BASE_LINK}")
@@ -125,23 +138,39 @@ function(generate_robot_dynamics)
       COMMENT "rbdgen: ${arg_SCENE} -> ${ns}/dynamics.hpp"
       VERBATIM)
   else()
-    add_custom_command(OUTPUT "${header}"
+    add_custom_command(OUTPUT ${outputs}
       COMMAND ${tool} generate "${urdf}" ${options}
       DEPENDS "${urdf}" ${tool}
       COMMENT "rbdgen: ${arg_URDF} -> ${ns}/dynamics.hpp"
       VERBATIM)
   endif()
-  add_custom_target(${arg_TARGET}_generate DEPENDS "${header}")
+  add_custom_target(${arg_TARGET}_generate DEPENDS ${outputs})
   add_library(${arg_TARGET} INTERFACE)
   add_dependencies(${arg_TARGET} ${arg_TARGET}_generate)
   target_include_directories(${arg_TARGET} INTERFACE "$<BUILD_INTERFACE:${outdir}>")
   target_link_libraries(${arg_TARGET} INTERFACE Eigen3::Eigen)
   target_compile_features(${arg_TARGET} INTERFACE cxx_std_17)
   set_target_properties(${arg_TARGET} PROPERTIES RBDGEN_HEADER "${header}" RBDGEN_NAMESPACE "${ns}")
+  if(arg_BATCH)
+    _rbdgen_batch_requirements(${arg_TARGET})
+  endif()
 
   if(arg_PYTHON_MODULE)
     _rbdgen_python_module(${arg_TARGET} "${arg_PYTHON_MODULE}" "${header}" "${ns}" "${robot_name}")
   endif()
+endfunction()
+
+# What batch.hpp needs: xsimd's headers (found by path: the Debian package's CMake config names a
+# target xtl that it does not ship) and std::thread.
+function(_rbdgen_batch_requirements target)
+  find_path(RBDGEN_XSIMD_INCLUDE_DIR xsimd/xsimd.hpp DOC "include directory of xsimd (BATCH)")
+  if(NOT RBDGEN_XSIMD_INCLUDE_DIR)
+    message(FATAL_ERROR "generate_robot_dynamics(${target}): BATCH needs the xsimd headers (Debian: libxsimd-dev); "
+                        "set RBDGEN_XSIMD_INCLUDE_DIR to the directory holding xsimd/xsimd.hpp")
+  endif()
+  find_package(Threads REQUIRED)
+  target_include_directories(${target} SYSTEM INTERFACE "${RBDGEN_XSIMD_INCLUDE_DIR}")
+  target_link_libraries(${target} INTERFACE Threads::Threads)
 endfunction()
 
 # The pybind11 module `module` over the generated header of `target` (see PYTHON_MODULE above).

@@ -23,6 +23,7 @@ struct GenerateOptions
   bool floatingBase = false;
   std::string baseLink;      ///< default: the URDF root link
   bool derivatives = false;  ///< also emit inverse/forward dynamics derivatives
+  bool batch = false;        ///< also write <namespace>/batch.hpp: the functions over N states (xsimd packs, threads)
 };
 
 struct GeneratedFile
@@ -51,6 +52,10 @@ RobotModel robotModelFromUrdf(const rbd::parsers::ParserResult & robot);
 /// derivatives: also emit inverse_dynamics_derivatives() and forward_dynamics_derivatives().
 std::string emitHeader(const RobotModel & rm, const std::string & ns, const std::string & sourceName,
                        const std::string & sourceHash, const std::string & options, bool derivatives = false);
+
+/// The batch header NS/batch.hpp (templates/batch.hpp.in) over the header of the same robot:
+/// provenance is its first comment lines; forwardDynamics and derivatives say which functions it has.
+std::string emitBatchHeader(const std::string & ns, const std::string & provenance, bool forwardDynamics, bool derivatives);
 
 /// Write files under outDir: each goes to a temporary file first and is renamed into place only
 /// once all were written; a file whose content did not change is left untouched (mtime kept).

@@ -1,5 +1,5 @@
 // `rbdgen generate ROBOT.urdf --out DIR` or `rbdgen generate --scene SCENE.xml --out DIR`: emit
-// NS/dynamics.hpp (plain, or specialised to the scene's effects).
+// NS/dynamics.hpp (plain, or specialised to the scene's effects), and NS/batch.hpp with --batch.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -21,6 +21,7 @@ Command addGenerateCommand(CLI::App & app)
     std::string outDir, ns, scene, depfile;
     bool strict = false;
     bool derivatives = false;
+    bool batch = false;
   };
   auto o = std::make_shared<Options>();
   CLI::App * cmd = app.add_subcommand("generate", "emit NS/dynamics.hpp for the robot (or the scene) into --out DIR");
@@ -35,6 +36,9 @@ Command addGenerateCommand(CLI::App & app)
   cmd->add_flag("--derivatives", o->derivatives,
                 "also emit inverse_dynamics_derivatives(q, alpha, alphaD) and forward_dynamics_derivatives(q, alpha, tau) "
                 "(d/dq in the tangent space, d/dalpha, M^-1)");
+  cmd->add_flag("--batch", o->batch,
+                "also write NS/batch.hpp: the functions over N states at a time (row-major N x n arrays) on xsimd packs "
+                "and threads (needs xsimd, libxsimd-dev; URDF only)");
   cmd->add_option("--depfile", o->depfile, "also write a Makefile-syntax depfile (header: inputs) for the build system");
   return {cmd,
           [o] {
@@ -44,6 +48,7 @@ Command addGenerateCommand(CLI::App & app)
             opt.scene = o->scene;
             opt.strict = o->strict;
             opt.derivatives = o->derivatives;
+            opt.batch = o->batch;
             opt.floatingBase = o->robot.floatingBase;
             opt.baseLink = o->robot.baseLink;
             opt.outDir = o->outDir;

@@ -28,8 +28,8 @@
 #
 # PYTHON_MODULE module (URDF only): also a pybind11 module target `module` (`import module`;
 # module.robot() is the object of rbdgen.compile: the API of rbdgen.Robot, with the derivatives when
-# DERIVATIVES is given), built from the Python package's module template and headers (installed by
-# rbdgen's component `python`). Needs pybind11, found by the caller first:
+# DERIVATIVES is given; implies BATCH: batches run on NS/batch.hpp), built from the Python package's
+# module template and headers (installed by rbdgen's component `python`). Needs pybind11, found by the caller first:
 #   find_package(Python3 COMPONENTS Interpreter Development.Module REQUIRED)
 #   find_package(pybind11 CONFIG REQUIRED)
 #   generate_robot_dynamics(TARGET panda_dynamics URDF panda.urdf DERIVATIVES PYTHON_MODULE panda_py)
@@ -68,6 +68,9 @@ function(generate_robot_dynamics)
   if(arg_SCENE AND arg_PYTHON_MODULE)
     message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): PYTHON_MODULE takes a URDF (a scene's header has "
                         "another API; rbdgen.Robot.from_scene evaluates scenes from Python)")
+  endif()
+  if(arg_PYTHON_MODULE)
+    set(arg_BATCH ON) # the module evaluates batches with NS/batch.hpp
   endif()
   if(arg_SCENE)
     get_filename_component(input "${arg_SCENE}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")

@@ -3,7 +3,7 @@
 #   find_package(rbdgen CONFIG REQUIRED)
 #   generate_robot_dynamics(TARGET panda_dynamics URDF robots/panda.urdf
 #                           [NAMESPACE panda] [FLOATING_BASE] [BASE_LINK link] [OUTPUT_DIR dir] [STRICT]
-#                           [DERIVATIVES] [INDEPENDENT_MIMIC] [INSTANTIATE] [PYTHON_MODULE module])
+#                           [DERIVATIVES] [INDEPENDENT_MIMIC] [INSTANTIATE] [BATCH] [PYTHON_MODULE module])
 #   generate_robot_dynamics(TARGET quadruped_sim SCENE scenes/quadruped_ground.xml
 #                           [NAMESPACE ns] [OUTPUT_DIR dir] [STRICT])
 #   target_link_libraries(my_controller PRIVATE panda_dynamics)
@@ -25,13 +25,17 @@
 # Mimic joints are coupled to the joints they follow (not dofs; the full model is in NS::independent);
 # INDEPENDENT_MIMIC keeps them as independent joints with their own dofs (rbdgen --independent-mimic).
 # INSTANTIATE (URDF only): TARGET is a STATIC library compiling <NAMESPACE>/dynamics_double.cpp and
-# dynamics_float.cpp, every function instantiated there for double and float and declared `extern template` in the header, so that the
-# robot's code is compiled once rather than in every translation unit that includes the header.
+# dynamics_float.cpp, every function instantiated there for double and float and declared
+# `extern template` in the header, so that the robot's code is compiled once rather than in every
+# translation unit that includes the header.
+# BATCH (URDF only): also <OUTPUT_DIR>/<NAMESPACE>/batch.hpp, the functions over N states at a time on
+# xsimd packs and threads (rbdgen generate --batch); TARGET then carries xsimd's include directory
+# (Debian: libxsimd-dev; the header only, its CMake package is not used) and Threads::Threads.
 #
 # PYTHON_MODULE module (URDF only): also a pybind11 module target `module` (`import module`;
 # module.robot() is the object of rbdgen.compile: the API of rbdgen.Robot, with the derivatives when
-# DERIVATIVES is given), built from the Python package's module template and headers (installed by
-# rbdgen's component `python`). Needs pybind11, found by the caller first:
+# DERIVATIVES is given; implies BATCH: batches run on NS/batch.hpp), built from the Python package's
+# module template and headers (installed by rbdgen's component `python`). Needs pybind11, found by the caller first:
 #   find_package(Python3 COMPONENTS Interpreter Development.Module REQUIRED)
 #   find_package(pybind11 CONFIG REQUIRED)
 #   generate_robot_dynamics(TARGET panda_dynamics URDF panda.urdf DERIVATIVES PYTHON_MODULE panda_py)
@@ -53,7 +57,7 @@ function(_rbdgen_identifier out text)
 endfunction()
 
 function(generate_robot_dynamics)
-  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE;STRICT;DERIVATIVES;INDEPENDENT_MIMIC;INSTANTIATE" "TARGET;URDF;SCENE;NAMESPACE;BASE_LINK;OUTPUT_DIR;PYTHON_MODULE" "")
+  cmake_parse_arguments(PARSE_ARGV 0 arg "FLOATING_BASE;STRICT;DERIVATIVES;INDEPENDENT_MIMIC;INSTANTIATE;BATCH" "TARGET;URDF;SCENE;NAMESPACE;BASE_LINK;OUTPUT_DIR;PYTHON_MODULE" "")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "generate_robot_dynamics: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
@@ -64,9 +68,15 @@ function(generate_robot_dynamics)
     message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): SCENE names the URDF and the base: "
                         "URDF, FLOATING_BASE and BASE_LINK cannot be given with it")
   endif()
+  if(arg_SCENE AND arg_BATCH)
+    message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): BATCH takes a URDF (scene headers have no batch API yet)")
+  endif()
   if(arg_SCENE AND arg_PYTHON_MODULE)
     message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): PYTHON_MODULE takes a URDF (a scene's header has "
                         "another API; rbdgen.Robot.from_scene evaluates scenes from Python)")
+  endif()
+  if(arg_PYTHON_MODULE)
+    set(arg_BATCH ON) # the module evaluates batches with NS/batch.hpp
   endif()
   if(arg_SCENE)
     get_filename_component(input "${arg_SCENE}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
@@ -100,6 +110,10 @@ function(generate_robot_dynamics)
     set(outdir "${CMAKE_CURRENT_BINARY_DIR}/${arg_TARGET}")
   endif()
   set(header "${outdir}/${ns}/dynamics.hpp")
+  set(outputs "${header}")
+  if(arg_BATCH)
+    list(APPEND outputs "${outdir}/${ns}/batch.hpp")
+  endif()
 
   set(options --out "${outdir}" --namespace "${ns}")
   if(arg_STRICT)
@@ -114,13 +128,15 @@ function(generate_robot_dynamics)
   if(arg_INDEPENDENT_MIMIC)
     list(APPEND options --independent-mimic)
   endif()
-  set(outputs "${header}")
   if(arg_INSTANTIATE)
     if(arg_SCENE)
       message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): INSTANTIATE takes a URDF, not a SCENE")
     endif()
     list(APPEND options --instantiate)
     list(APPEND outputs "${outdir}/${ns}/dynamics_double.cpp" "${outdir}/${ns}/dynamics_float.cpp")
+  endif()
+  if(arg_BATCH)
+    list(APPEND options --batch)
   endif()
   if(arg_BASE_LINK)
     list(APPEND options --base-link "${arg_BASE_LINK}")
@@ -147,7 +163,7 @@ function(generate_robot_dynamics)
       COMMENT "rbdgen: ${arg_URDF} -> ${ns}/dynamics.hpp"
       VERBATIM)
   endif()
-  add_custom_target(${arg_TARGET}_generate DEPENDS "${header}")
+  add_custom_target(${arg_TARGET}_generate DEPENDS ${outputs})
   if(arg_INSTANTIATE) # a static library: the robot's code compiled once, in dynamics_{double,float}.cpp
     add_library(${arg_TARGET} STATIC "${outdir}/${ns}/dynamics_double.cpp" "${outdir}/${ns}/dynamics_float.cpp")
     set_target_properties(${arg_TARGET} PROPERTIES POSITION_INDEPENDENT_CODE ON) # also into shared objects
@@ -161,10 +177,26 @@ function(generate_robot_dynamics)
   target_link_libraries(${arg_TARGET} ${scope} Eigen3::Eigen)
   target_compile_features(${arg_TARGET} ${scope} cxx_std_17)
   set_target_properties(${arg_TARGET} PROPERTIES RBDGEN_HEADER "${header}" RBDGEN_NAMESPACE "${ns}")
+  if(arg_BATCH)
+    _rbdgen_batch_requirements(${arg_TARGET})
+  endif()
 
   if(arg_PYTHON_MODULE)
     _rbdgen_python_module(${arg_TARGET} "${arg_PYTHON_MODULE}" "${header}" "${ns}" "${robot_name}")
   endif()
+endfunction()
+
+# What batch.hpp needs: xsimd's headers (found by path: the Debian package's CMake config names a
+# target xtl that it does not ship) and std::thread.
+function(_rbdgen_batch_requirements target)
+  find_path(RBDGEN_XSIMD_INCLUDE_DIR xsimd/xsimd.hpp DOC "include directory of xsimd (BATCH)")
+  if(NOT RBDGEN_XSIMD_INCLUDE_DIR)
+    message(FATAL_ERROR "generate_robot_dynamics(${target}): BATCH needs the xsimd headers (Debian: libxsimd-dev); "
+                        "set RBDGEN_XSIMD_INCLUDE_DIR to the directory holding xsimd/xsimd.hpp")
+  endif()
+  find_package(Threads REQUIRED)
+  target_include_directories(${target} SYSTEM INTERFACE "${RBDGEN_XSIMD_INCLUDE_DIR}")
+  target_link_libraries(${target} INTERFACE Threads::Threads)
 endfunction()
 
 # The pybind11 module `module` over the generated header of `target` (see PYTHON_MODULE above).

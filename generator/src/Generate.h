@@ -30,6 +30,7 @@ struct GenerateOptions
   /// Also write <ns>/dynamics_double.cpp and dynamics_float.cpp with the explicit instantiations, and
   /// end the header with their `extern template` declarations (URDF only).
   bool instantiate = false;
+  bool batch = false;        ///< also write <namespace>/batch.hpp: the functions over N states (xsimd packs, threads)
 };
 
 struct GeneratedFile
@@ -61,6 +62,10 @@ RobotModel robotModelFromUrdf(const rbd::parsers::ParserResult & robot);
 std::string emitHeader(const RobotModel & rm, const std::string & ns, const std::string & sourceName,
                        const std::string & sourceHash, const std::string & options, bool derivatives = false,
                        const rbd::parsers::MimicCoupling & coupling = {});
+
+/// The batch header NS/batch.hpp (templates/batch.hpp.in) over the header of the same robot:
+/// provenance is its first comment lines; forwardDynamics and derivatives say which functions it has.
+std::string emitBatchHeader(const std::string & ns, const std::string & provenance, bool forwardDynamics, bool derivatives);
 
 /// Write files under outDir: each goes to a temporary file first and is renamed into place only
 /// once all were written; a file whose content did not change is left untouched (mtime kept).

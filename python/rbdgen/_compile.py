@@ -93,7 +93,7 @@ def _key(data, floating_base, base_link, cxx, derivatives=True):
              repr((bool(floating_base), base_link or "", bool(derivatives))).encode(),
              _TEMPLATE.read_bytes()]
     parts += [(_INCLUDE_DIR / "rbdgen_py" / name).read_bytes() for name in _HEADERS]
-    parts += [cxx.encode(), " ".join(CXXFLAGS).encode(), _config.EIGEN_INCLUDE.encode(),
+    parts += [cxx.encode(), " ".join(CXXFLAGS).encode(), _config.EIGEN_INCLUDE.encode(), _config.XSIMD_INCLUDE.encode(),
               _EXT_SUFFIX.encode(), sys.version.encode(), _cpu_model().encode()]
     for p in parts:
         h.update(len(p).to_bytes(8, "little"))
@@ -106,16 +106,18 @@ def _build(path, floating_base, base_link, derivatives, name, robot_name, cxx, f
     final_dir.parent.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix=name + ".tmp-", dir=final_dir.parent))
     try:
-        header = _core._generate_header(path, floating_base, base_link or "", name, derivatives)
-        (work / header["path"]).parent.mkdir(parents=True, exist_ok=True)
-        (work / header["path"]).write_bytes(header["content"])
+        files = _core._generate_headers(path, floating_base, base_link or "", name, derivatives, batch=True)
+        for f in files:  # NS/dynamics.hpp, NS/batch.hpp (batches run on SIMD packs)
+            (work / f["path"]).parent.mkdir(parents=True, exist_ok=True)
+            (work / f["path"]).write_bytes(f["content"])
+        header = files[0]
         has_fd = b"constexpr bool has_forward_dynamics = true;" in header["content"]
         has_derivatives = b"constexpr bool has_derivatives = true;" in header["content"]
         source = module_source(_TEMPLATE.read_text(), name, name, robot_name, has_fd, has_derivatives)
         (work / "module.cpp").write_text(source)
         so_name = name + _EXT_SUFFIX
         includes = [str(work), str(_INCLUDE_DIR)] + _config.EIGEN_INCLUDE.split(";") + \
-            [_config.PYBIND11_INCLUDE, _PYTHON_INCLUDE]
+            [_config.XSIMD_INCLUDE, _config.PYBIND11_INCLUDE, _PYTHON_INCLUDE]
         cmd = [cxx, *CXXFLAGS] + ["-I" + d for d in includes if d] + [str(work / "module.cpp"), "-o", str(work / so_name)]
         (work / "command.txt").write_text(" ".join(cmd) + "\n")
         if verbose:

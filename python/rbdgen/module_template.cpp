@@ -3,8 +3,10 @@
 // these words between @ signs: MODULE (the module name), NS (the namespace of the generated header
 // NS/dynamics.hpp), ROBOT_STRING (the robot's name as a C++ string literal), HAS_FD and
 // HAS_DERIVATIVES (0 or 1: whether the header has forward_dynamics, and the derivatives).
-// The class is the one of rbdgen.Robot (rbdgen_py/bind.hpp), on the generated functions.
-#include <@NS@/dynamics.hpp>
+// The class is the one of rbdgen.Robot (rbdgen_py/bind.hpp), on the generated functions: a single
+// state by the single-state function, the states of a batch by the batch API NS/batch.hpp (SIMD
+// packs of the native width; bind.hpp hands over blocks of consecutive states, on its threads).
+#include <@NS@/batch.hpp>
 
 #include <rbdgen_py/bind.hpp>
 
@@ -24,6 +26,9 @@ struct GeneratedModel
   struct Workspace
   {
   };
+  /// Each function takes the number of states n last: 0 for one state (the single-state function),
+  /// n >= 1 for n consecutive states (the batch API, on the calling thread).
+  static constexpr bool kBatched = true;
 
   int nq() const { return g::nq; }
   int nv() const { return g::nv; }
@@ -34,8 +39,9 @@ struct GeneratedModel
   std::vector<std::string> bodyNames() const { return {g::body_names.begin(), g::body_names.end()}; }
   Workspace makeWorkspace() const { return {}; }
 
-  void forwardKinematics(Workspace &, const double * q, double * out) const
+  void forwardKinematics(Workspace &, const double * q, double * out, std::ptrdiff_t n) const
   {
+    if(n > 0) return g::batch::forward_kinematics<double>(q, out, static_cast<std::size_t>(n));
     const auto poses = g::forward_kinematics<double>(Q(Eigen::Map<const Q>(q)));
     for(std::size_t i = 0; i < poses.size(); ++i)
     {
@@ -45,30 +51,35 @@ struct GeneratedModel
       T.topRightCorner<3, 1>() = poses[i].translation;
     }
   }
-  void inverseDynamics(Workspace &, const double * q, const double * v, const double * a, double * tau) const
+  void inverseDynamics(Workspace &, const double * q, const double * v, const double * a, double * tau, std::ptrdiff_t n) const
   {
+    if(n > 0) return g::batch::inverse_dynamics<double>(q, v, a, tau, static_cast<std::size_t>(n));
     Eigen::Map<V>{tau} = g::inverse_dynamics<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
                                                       V(Eigen::Map<const V>(a)));
   }
-  void massMatrix(Workspace &, const double * q, double * H) const
+  void massMatrix(Workspace &, const double * q, double * H, std::ptrdiff_t n) const
   {
+    if(n > 0) return g::batch::mass_matrix<double>(q, H, static_cast<std::size_t>(n));
     RowMajorMap<g::nv, g::nv>{H} = g::mass_matrix<double>(Q(Eigen::Map<const Q>(q)));
   }
   void forwardDynamics([[maybe_unused]] Workspace & ws, [[maybe_unused]] const double * q,
                        [[maybe_unused]] const double * v, [[maybe_unused]] const double * tau,
-                       [[maybe_unused]] double * a) const
+                       [[maybe_unused]] double * a, [[maybe_unused]] std::ptrdiff_t n) const
   {
 #if @HAS_FD@
+    if(n > 0) return g::batch::forward_dynamics<double>(q, v, tau, a, static_cast<std::size_t>(n));
     Eigen::Map<V>{a} = g::forward_dynamics<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
                                                     V(Eigen::Map<const V>(tau)));
 #endif
   }
-  void jacobian(Workspace &, int body, const double * q, double * J) const
+  void jacobian(Workspace &, int body, const double * q, double * J, std::ptrdiff_t n) const
   {
+    if(n > 0) return g::batch::jacobian<double>(static_cast<g::Body>(body), q, J, static_cast<std::size_t>(n));
     RowMajorMap<6, g::nv>{J} = g::jacobian<double>(static_cast<g::Body>(body), Q(Eigen::Map<const Q>(q)));
   }
-  void centerOfMass(Workspace &, const double * q, double * c) const
+  void centerOfMass(Workspace &, const double * q, double * c, std::ptrdiff_t n) const
   {
+    if(n > 0) return g::batch::center_of_mass<double>(q, c, static_cast<std::size_t>(n));
     Eigen::Map<Eigen::Vector3d>{c} = g::center_of_mass<double>(Q(Eigen::Map<const Q>(q)));
   }
 
@@ -76,9 +87,11 @@ struct GeneratedModel
   std::string noDerivativesReason() const { return "generated without derivatives"; }
   void inverseDynamicsDerivatives([[maybe_unused]] Workspace & ws, [[maybe_unused]] const double * q,
                                   [[maybe_unused]] const double * v, [[maybe_unused]] const double * a,
-                                  [[maybe_unused]] double * dtauDq, [[maybe_unused]] double * dtauDv) const
+                                  [[maybe_unused]] double * dtauDq, [[maybe_unused]] double * dtauDv,
+                                  [[maybe_unused]] std::ptrdiff_t n) const
   {
 #if @HAS_DERIVATIVES@
+    if(n > 0) return g::batch::inverse_dynamics_derivatives<double>(q, v, a, dtauDq, dtauDv, static_cast<std::size_t>(n));
     const auto d = g::inverse_dynamics_derivatives<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
                                                            V(Eigen::Map<const V>(a)));
     RowMajorMap<g::nv, g::nv>{dtauDq} = d.dtau_dq;
@@ -88,9 +101,12 @@ struct GeneratedModel
   void forwardDynamicsDerivatives([[maybe_unused]] Workspace & ws, [[maybe_unused]] const double * q,
                                   [[maybe_unused]] const double * v, [[maybe_unused]] const double * tau,
                                   [[maybe_unused]] double * a, [[maybe_unused]] double * daDq,
-                                  [[maybe_unused]] double * daDv, [[maybe_unused]] double * Minv) const
+                                  [[maybe_unused]] double * daDv, [[maybe_unused]] double * Minv,
+                                  [[maybe_unused]] std::ptrdiff_t n) const
   {
 #if @HAS_DERIVATIVES@ && @HAS_FD@
+    if(n > 0)
+      return g::batch::forward_dynamics_derivatives<double>(q, v, tau, a, daDq, daDv, Minv, static_cast<std::size_t>(n));
     const auto d = g::forward_dynamics_derivatives<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
                                                            V(Eigen::Map<const V>(tau)));
     Eigen::Map<V>{a} = d.alphaD;

@@ -25,9 +25,10 @@ std::string fspath(const py::object & path)
   return py::str(py::module_::import("os").attr("fspath")(path)).cast<std::string>();
 }
 
-/// The header generated for a URDF (nothing written): rbdgen.compile's input.
-py::dict generateHeader(const py::object & path, bool floatingBase, const std::string & baseLink, const std::string & ns,
-                        bool derivatives)
+/// The headers generated for a URDF (nothing written), NS/dynamics.hpp and, with batch, NS/batch.hpp:
+/// rbdgen.compile's input.
+py::list generateHeaders(const py::object & path, bool floatingBase, const std::string & baseLink, const std::string & ns,
+                         bool derivatives, bool batch)
 {
   rbdgen::GenerateOptions opt;
   opt.urdf = fspath(path);
@@ -35,10 +36,15 @@ py::dict generateHeader(const py::object & path, bool floatingBase, const std::s
   opt.baseLink = baseLink;
   opt.ns = ns;
   opt.derivatives = derivatives;
-  const std::vector<rbdgen::GeneratedFile> files = rbdgen::generateFiles(opt);
-  py::dict result;
-  result["path"] = files.front().path;
-  result["content"] = py::bytes(files.front().content);
+  opt.batch = batch;
+  py::list result;
+  for(const rbdgen::GeneratedFile & f : rbdgen::generateFiles(opt))
+  {
+    py::dict file;
+    file["path"] = f.path;
+    file["content"] = py::bytes(f.content);
+    result.append(file);
+  }
   return result;
 }
 
@@ -92,6 +98,7 @@ PYBIND11_MODULE(_core, m)
           "inverse_dynamics, mass_matrix (+ armature) and forward_dynamics include its gravity, damping, friction "
           "and ground contacts (no external wrench). A broken scene raises ValueError.");
 
-  m.def("_generate_header", &generateHeader, py::arg("path"), py::arg("floating_base"), py::arg("base_link"),
-        py::arg("namespace"), py::arg("derivatives") = false, "The generated header of a URDF, in memory: dict(path=relative path, content=bytes).");
+  m.def("_generate_headers", &generateHeaders, py::arg("path"), py::arg("floating_base"), py::arg("base_link"),
+        py::arg("namespace"), py::arg("derivatives") = false, py::arg("batch") = false,
+        "The generated headers of a URDF, in memory: [dict(path=relative path, content=bytes)], dynamics.hpp first.");
 }

@@ -203,8 +203,8 @@ void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv)
         b.line(fmt::format("X.row({}) -= {} * X.row({});", i, Block::text(f.L[i][static_cast<std::size_t>(j)]), j));
   b.line("d.Minv = X;");
   b.comment("d alphaD = -H^-1 dID at alphaD");
-  b.line("d.dalphaD_dq.noalias() = -d.Minv * id.dtau_dq;");
-  b.line("d.dalphaD_dalpha.noalias() = -d.Minv * id.dtau_dalpha;");
+  b.line("detail::Lanes<S>::product(d.dalphaD_dq, -d.Minv, id.dtau_dq);");
+  b.line("detail::Lanes<S>::product(d.dalphaD_dalpha, -d.Minv, id.dtau_dalpha);");
 }
 
 /// alphaD = (H + diag(armature))^-1 (tau - bias) into d.alphaD, then the derivatives (biasCall

@@ -281,6 +281,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
   v["provenance"] = provenance;
   v["namespace"] = ns;
   v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
+  v["detail_lanes"] = templateText("detail_lanes.hpp.in"); // detail::Lanes<S> (one state, or a pack: batch.hpp)
   if(scene.outputs.derivatives) v["detail_opaque"] = templateText("detail_opaque.hpp.in"); // detail::opaque (derivatives)
   v.merge(robotTemplateValues(rm)); // nq, nv, nbodies, Body enum, names
   v.erase("nframes");                // not shown by the scene header

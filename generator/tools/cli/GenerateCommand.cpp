@@ -1,5 +1,5 @@
 // `rbdgen generate ROBOT.urdf --out DIR` or `rbdgen generate --scene SCENE.xml --out DIR`: emit
-// NS/dynamics.hpp (plain, or specialised to the scene's effects).
+// NS/dynamics.hpp (plain, or specialised to the scene's effects), and NS/batch.hpp with --batch.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -23,6 +23,7 @@ Command addGenerateCommand(CLI::App & app)
     bool derivatives = false;
     bool independentMimic = false;
     bool instantiate = false;
+    bool batch = false;
   };
   auto o = std::make_shared<Options>();
   CLI::App * cmd = app.add_subcommand("generate", "emit NS/dynamics.hpp for the robot (or the scene) into --out DIR");
@@ -43,6 +44,9 @@ Command addGenerateCommand(CLI::App & app)
   cmd->add_flag("--instantiate", o->instantiate,
                 "also write NS/dynamics_double.cpp and NS/dynamics_float.cpp with every function instantiated, and declare "
                 "them extern template in the header: the robot's code is compiled once, in those files (link them)");
+  cmd->add_flag("--batch", o->batch,
+                "also write NS/batch.hpp: the functions over N states at a time (row-major N x n arrays) on xsimd packs "
+                "and threads (needs xsimd, libxsimd-dev; URDF only)");
   cmd->add_option("--depfile", o->depfile, "also write a Makefile-syntax depfile (header: inputs) for the build system");
   return {cmd,
           [o] {
@@ -54,6 +58,7 @@ Command addGenerateCommand(CLI::App & app)
             opt.derivatives = o->derivatives;
             opt.independentMimic = o->independentMimic;
             opt.instantiate = o->instantiate;
+            opt.batch = o->batch;
             opt.floatingBase = o->robot.floatingBase;
             opt.baseLink = o->robot.baseLink;
             opt.outDir = o->outDir;

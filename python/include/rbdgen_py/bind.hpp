@@ -19,11 +19,17 @@
 //                                   double * a, double * daDq, double * daDv, double * Minv);  // nv, nv x nv
 // Derivatives with respect to q are taken in the tangent space (size nv: q ⊕ ε e_m moves joint j of
 // dof m by its motion subspace S_m; for a free joint [dw; dv] in the child frame, like v).
+// A Model with `static constexpr bool kBatched = true` evaluates blocks of consecutive states: each
+// function above then takes a last argument `std::ptrdiff_t n`, the number of states (consecutive
+// items of the arrays), 0 for a single-state call (the compiled robots: the single-state generated
+// function for 0, the batch API on SIMD packs for n >= 1, even n = 1, so that a state of a batch is
+// evaluated the same way whatever the thread count).
 #include <algorithm>
 #include <array>
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -36,6 +42,24 @@
 
 namespace rbdgen_py
 {
+
+/// Whether Model evaluates blocks of states (Model::kBatched, see the top of this file).
+template<class Model, class = void>
+struct Batched : std::false_type
+{
+};
+template<class Model>
+struct Batched<Model, std::void_t<decltype(Model::kBatched)>> : std::bool_constant<Model::kBatched>
+{
+};
+
+/// (md.*f)(args..., n) for a batched Model; (md.*f)(args...) otherwise (n is then 0: one state).
+template<class Model, class F, class... A>
+void callModel(const Model & md, F f, std::ptrdiff_t n, A &&... args)
+{
+  if constexpr(Batched<Model>::value) (md.*f)(std::forward<A>(args)..., n);
+  else (md.*f)(std::forward<A>(args)...);
+}
 
 /// A model and the workspace of single-state calls (used with the GIL held, so one at a time).
 template<class Model>
@@ -52,8 +76,10 @@ public:
     return *single_;
   }
 
-  /// Evaluate f(ws, inputs, outputs) on each state of `in` (all checked, same batch size) into M
-  /// new arrays, output m of shape itemShapes[m] (prefixed by N for a batch).
+  /// Evaluate f(ws, inputs, outputs, n) on the states of `in` (all checked, same batch size) into M
+  /// new arrays, output m of shape itemShapes[m] (prefixed by N for a batch): f evaluates the n
+  /// states from the given pointers on (n = 0: one state, a single-state call; a batched Model gets
+  /// blocks of up to kScanBlock states, any other one state per call with n = 0).
   template<std::size_t K, std::size_t M, class F>
   std::array<py::object, M> runMany(const char * fn, const std::array<Input, K> & in,
                                     const std::array<py::ssize_t, K> & width,
@@ -72,36 +98,38 @@ public:
       o[m] = a.mutable_data();
       out[m] = std::move(a);
     }
-    auto one = [&](Workspace & ws, std::ptrdiff_t i) {
+    // states from i on (n of them; 0: one state, single-state call)
+    auto evaluate = [&](Workspace & ws, std::ptrdiff_t i, std::ptrdiff_t n) {
       std::array<const double *, K> p;
       for(std::size_t k = 0; k < K; ++k) p[k] = in[k].data + i * width[k];
       std::array<double *, M> r;
       for(std::size_t m = 0; m < M; ++m) r[m] = o[m] + i * itemSize[m];
-      f(ws, p, r);
+      f(ws, p, r, n);
     };
     try
     {
-      if(!in[0].batch) one(single(), 0); // (its values were checked by checkInput)
+      if(!in[0].batch) evaluate(single(), 0, 0); // (its values were checked by checkInput)
       else
       {
         const Model & md = *model_;
         const std::ptrdiff_t rows = in[0].rows;
-        struct Scratch
-        {
-          Workspace ws;
-          std::ptrdiff_t checkedEnd; ///< states [.., checkedEnd) have finite inputs
-        };
         py::gil_scoped_release release;
-        parallelFor(
-            rows, threads, [&md] { return Scratch{md.makeWorkspace(), 0}; },
-            [&](Scratch & s, std::ptrdiff_t i) {
-              if(i >= s.checkedEnd) // the next block of states: its values, about to be read, are checked first
-              {
-                s.checkedEnd = std::min<std::ptrdiff_t>(rows, i + kScanBlock);
-                checkFinite(fn, in, width, i, s.checkedEnd);
-              }
-              one(s.ws, i);
-            });
+        parallelFor(rows, threads, [&md] { return md.makeWorkspace(); },
+                    [&](Workspace & ws, std::ptrdiff_t begin, std::ptrdiff_t end, std::ptrdiff_t & at) {
+                      for(at = begin; at < end;)
+                      {
+                        // the next block of states: its values, about to be read, are checked first
+                        const std::ptrdiff_t blockEnd = std::min(end, at + kScanBlock);
+                        checkFinite(fn, in, width, at, blockEnd);
+                        if constexpr(Batched<Model>::value)
+                        {
+                          evaluate(ws, at, blockEnd - at);
+                          at = blockEnd;
+                        }
+                        else
+                          for(; at < blockEnd; ++at) evaluate(ws, at, 0);
+                      }
+                    });
       }
     }
     catch(const InputError & e)
@@ -130,13 +158,15 @@ public:
           throw InputError(nonFiniteMessage(fn, in[k], i, in[k].data + i * width[k], width[k]));
   }
 
-  /// runMany with one output: f(ws, inputs, out).
+  /// runMany with one output: f(ws, inputs, out, n).
   template<std::size_t K, class F>
   py::object run(const char * fn, const std::array<Input, K> & in, const std::array<py::ssize_t, K> & width,
                  std::vector<py::ssize_t> itemShape, int threads, F && f)
   {
     auto out = runMany<K, 1>(fn, in, width, {std::move(itemShape)}, threads,
-                             [&f](auto & ws, const auto & p, const std::array<double *, 1> & o) { f(ws, p, o[0]); });
+                             [&f](auto & ws, const auto & p, const std::array<double *, 1> & o, std::ptrdiff_t n) {
+                               f(ws, p, o[0], n);
+                             });
     return std::move(out[0]);
   }
 
@@ -216,7 +246,7 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         const Model & md = r.model();
         const std::array<Input, 1> in{checkInput("forward_kinematics", "q", q, md.nq())};
         return r.run("forward_kinematics", in, {md.nq()}, {md.nbodies(), 4, 4}, threads,
-                     [&md](auto & ws, const auto & p, double * o) { md.forwardKinematics(ws, p[0], o); });
+                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t n) { callModel(md, &Model::forwardKinematics, n, ws, p[0], o); });
       },
       py::arg("q"), py::kw_only(), py::arg("threads") = 1,
       doc("World pose of every link: (nbodies, 4, 4) homogeneous transforms [R p; 0 1], R the link's "
@@ -233,7 +263,9 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         checkSameBatch("inverse_dynamics", "q", in[0], "v", in[1], md.nv());
         checkSameBatch("inverse_dynamics", "q", in[0], "a", in[2], md.nv());
         return r.run("inverse_dynamics", in, {md.nq(), md.nv(), md.nv()}, {md.nv()}, threads,
-                     [&md](auto & ws, const auto & p, double * o) { md.inverseDynamics(ws, p[0], p[1], p[2], o); });
+                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t n) {
+                       callModel(md, &Model::inverseDynamics, n, ws, p[0], p[1], p[2], o);
+                     });
       },
       py::arg("q"), py::arg("v"), py::arg("a"), py::kw_only(), py::arg("threads") = 1,
       doc("Joint torques tau (nv,) for accelerations a at (q, v), gravity included (RNEA).").c_str());
@@ -244,7 +276,7 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         const Model & md = r.model();
         const std::array<Input, 1> in{checkInput("mass_matrix", "q", q, md.nq())};
         return r.run("mass_matrix", in, {md.nq()}, {md.nv(), md.nv()}, threads,
-                     [&md](auto & ws, const auto & p, double * o) { md.massMatrix(ws, p[0], o); });
+                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t n) { callModel(md, &Model::massMatrix, n, ws, p[0], o); });
       },
       py::arg("q"), py::kw_only(), py::arg("threads") = 1,
       doc("Joint-space inertia matrix H(q), (nv, nv).").c_str());
@@ -262,7 +294,9 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         checkSameBatch("forward_dynamics", "q", in[0], "v", in[1], md.nv());
         checkSameBatch("forward_dynamics", "q", in[0], "tau", in[2], md.nv());
         return r.run("forward_dynamics", in, {md.nq(), md.nv(), md.nv()}, {md.nv()}, threads,
-                     [&md](auto & ws, const auto & p, double * o) { md.forwardDynamics(ws, p[0], p[1], p[2], o); });
+                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t n) {
+                       callModel(md, &Model::forwardDynamics, n, ws, p[0], p[1], p[2], o);
+                     });
       },
       py::arg("q"), py::arg("v"), py::arg("tau"), py::kw_only(), py::arg("threads") = 1,
       doc("Joint accelerations a (nv,) = H(q)^-1 (tau - C(q, v)), gravity included.").c_str());
@@ -280,8 +314,8 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         const py::ssize_t n = md.nv();
         auto out = r.template runMany<3, 2>(
             "inverse_dynamics_derivatives", in, {md.nq(), n, n}, {{{n, n}, {n, n}}}, threads,
-            [&md](auto & ws, const auto & p, const auto & o) {
-              md.inverseDynamicsDerivatives(ws, p[0], p[1], p[2], o[0], o[1]);
+            [&md](auto & ws, const auto & p, const auto & o, std::ptrdiff_t n) {
+              callModel(md, &Model::inverseDynamicsDerivatives, n, ws, p[0], p[1], p[2], o[0], o[1]);
             });
         return py::make_tuple(std::move(out[0]), std::move(out[1]));
       },
@@ -308,8 +342,8 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         const py::ssize_t n = md.nv();
         auto out = r.template runMany<3, 4>(
             "forward_dynamics_derivatives", in, {md.nq(), n, n}, {{{n}, {n, n}, {n, n}, {n, n}}}, threads,
-            [&md](auto & ws, const auto & p, const auto & o) {
-              md.forwardDynamicsDerivatives(ws, p[0], p[1], p[2], o[0], o[1], o[2], o[3]);
+            [&md](auto & ws, const auto & p, const auto & o, std::ptrdiff_t n) {
+              callModel(md, &Model::forwardDynamicsDerivatives, n, ws, p[0], p[1], p[2], o[0], o[1], o[2], o[3]);
             });
         return py::make_tuple(std::move(out[0]), std::move(out[1]), std::move(out[2]), std::move(out[3]));
       },
@@ -326,7 +360,7 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         const int b = r.bodyIndex("jacobian", body);
         const std::array<Input, 1> in{checkInput("jacobian", "q", q, md.nq())};
         return r.run("jacobian", in, {md.nq()}, {6, md.nv()}, threads,
-                     [&md, b](auto & ws, const auto & p, double * o) { md.jacobian(ws, b, p[0], o); });
+                     [&md, b](auto & ws, const auto & p, double * o, std::ptrdiff_t n) { callModel(md, &Model::jacobian, n, ws, b, p[0], o); });
       },
       py::arg("body"), py::arg("q"), py::kw_only(), py::arg("threads") = 1,
       doc("Jacobian (6, nv) of a link (name or index in body_names): rows [angular; linear] in world axes, "
@@ -339,7 +373,7 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         const Model & md = r.model();
         const std::array<Input, 1> in{checkInput("center_of_mass", "q", q, md.nq())};
         return r.run("center_of_mass", in, {md.nq()}, {3}, threads,
-                     [&md](auto & ws, const auto & p, double * o) { md.centerOfMass(ws, p[0], o); });
+                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t n) { callModel(md, &Model::centerOfMass, n, ws, p[0], o); });
       },
       py::arg("q"), py::kw_only(), py::arg("threads") = 1, doc("Centre of mass (3,) in world coordinates.").c_str());
   return cls;

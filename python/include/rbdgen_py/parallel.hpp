@@ -1,7 +1,8 @@
 #pragma once
 // Batches over threads: the N states are cut into `threads` contiguous chunks, each run by one
-// std::thread with its own workspace, in state order. A state's result depends only on its inputs,
-// so the output is bitwise the same for every thread count. The first failure (lowest state index)
+// std::thread with its own workspace, in state order. A state's result depends only on its inputs
+// (a model evaluating several states at once, on SIMD packs, computes each lane independently), so
+// the output is bitwise the same for every thread count. The first failure (lowest state index)
 // is rethrown after every thread has joined, with the state index in the message (an InputError
 // as it is: its message names the input and the state).
 #include <algorithm>
@@ -33,25 +34,27 @@ public:
 /// At most this many threads per call (more would only add start-up cost; results do not depend on it).
 inline constexpr int kMaxThreads = 256;
 
-/// For each chunk: ws = makeWorkspace(); for i in chunk: body(ws, i). Returns after every thread joined.
-template<class MakeWorkspace, class Body>
-void parallelFor(std::ptrdiff_t n, int threads, MakeWorkspace && makeWorkspace, Body && body)
+/// For each chunk [begin, end): ws = makeWorkspace(); range(ws, begin, end, at), which evaluates the
+/// chunk's states in order and keeps `at` at the state it is evaluating (the failing state when it
+/// throws). Returns after every thread joined.
+template<class MakeWorkspace, class Range>
+void parallelFor(std::ptrdiff_t n, int threads, MakeWorkspace && makeWorkspace, Range && range)
 {
   const std::ptrdiff_t nthreads = std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>({threads, n, kMaxThreads}));
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(nthreads));
   std::vector<std::ptrdiff_t> failedAt(static_cast<std::size_t>(nthreads), -1);
   auto run = [&](std::ptrdiff_t t) {
     const std::ptrdiff_t begin = n * t / nthreads, end = n * (t + 1) / nthreads;
-    std::ptrdiff_t i = begin;
+    std::ptrdiff_t at = begin;
     try
     {
       auto ws = makeWorkspace();
-      for(; i < end; ++i) body(ws, i);
+      range(ws, begin, end, at);
     }
     catch(...)
     {
       errors[static_cast<std::size_t>(t)] = std::current_exception();
-      failedAt[static_cast<std::size_t>(t)] = i;
+      failedAt[static_cast<std::size_t>(t)] = at;
     }
   };
   if(nthreads == 1) run(0);

@@ -1,0 +1,152 @@
+// The cells of bench_batch (see BatchBench.h): for each robot and algorithm,
+//   single double | single float | SIMD double | SIMD float | SIMD double 2 threads | SIMD float 2 threads
+// each iteration evaluates N states of a pool of 4N seeded random states, starting N/4 states further
+// than the previous iteration (the inputs differ from one iteration to the next), into an N-state
+// output kept live. Wall-clock time (the threads' work included); counters: states/s and states/s
+// per core (threads = cores used). At start-up, a check line per algorithm: the largest difference
+// of the SIMD double batch from the single-state double code, and of the SIMD float batch from it.
+#include "BatchBench.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <random>
+#include <string>
+#include <type_traits>
+
+#include <Eigen/Core>
+#include <benchmark/benchmark.h>
+
+namespace rbdbench
+{
+namespace
+{
+
+/// States per call: enough that starting the threads of a call costs little (a few per cent).
+std::size_t batchSize(const BatchRobotInfo & r)
+{
+  return r.nv <= 20 ? 8192 : 2048;
+}
+
+/// The pool: 4N seeded random states (unit quaternion for a free base, joints and velocities in
+/// [-3, 3], the third input in [-2, 2]) in double and float.
+template<class T>
+struct Pool
+{
+  std::vector<T> q, v, u;
+  Inputs<T> at(const BatchRobotInfo & r, std::size_t first) const
+  {
+    return {q.data() + first * static_cast<std::size_t>(r.nq), v.data() + first * static_cast<std::size_t>(r.nv),
+            u.data() + first * static_cast<std::size_t>(r.nv)};
+  }
+};
+
+struct Pools
+{
+  Pool<double> d;
+  Pool<float> f;
+};
+
+std::shared_ptr<const Pools> makePools(const BatchRobotInfo & r, std::size_t states)
+{
+  auto p = std::make_shared<Pools>();
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> u3(-3, 3), u2(-2, 2);
+  p->d.q.resize(states * static_cast<std::size_t>(r.nq));
+  p->d.v.resize(states * static_cast<std::size_t>(r.nv));
+  p->d.u.resize(p->d.v.size());
+  for(double & x : p->d.q) x = u3(rng);
+  for(double & x : p->d.v) x = u3(rng);
+  for(double & x : p->d.u) x = u2(rng);
+  if(r.floatingBase)
+    for(std::size_t s = 0; s < states; ++s) Eigen::Map<Eigen::Vector4d>(p->d.q.data() + s * static_cast<std::size_t>(r.nq)).normalize();
+  p->f.q.assign(p->d.q.begin(), p->d.q.end());
+  p->f.v.assign(p->d.v.begin(), p->d.v.end());
+  p->f.u.assign(p->d.u.begin(), p->d.u.end());
+  return p;
+}
+
+/// max over states of max |x - ref| / max(1, max |ref|).
+template<class T>
+double worstRelative(const std::vector<T> & x, const std::vector<double> & ref, std::size_t N, int n)
+{
+  double worst = 0;
+  for(std::size_t s = 0; s < N; ++s)
+  {
+    double e = 0, m = 1;
+    for(int i = 0; i < n; ++i)
+    {
+      const std::size_t k = s * static_cast<std::size_t>(n) + static_cast<std::size_t>(i);
+      e = std::max(e, std::abs(static_cast<double>(x[k]) - ref[k]));
+      m = std::max(m, std::abs(ref[k]));
+    }
+    worst = std::max(worst, e / m);
+  }
+  return worst;
+}
+
+/// One cell: `threads` = 0 for the single-state loop.
+template<class T>
+void registerCell(const BatchRobotInfo & r, const BatchAlgorithm<T> & a, const std::shared_ptr<const Pools> & pools,
+                  const std::string & impl, int threads)
+{
+  const std::size_t N = batchSize(r);
+  const std::string name = std::string(r.name) + "/" + a.name + "/" + impl;
+  benchmark::RegisterBenchmark(name.c_str(), [r, a, pools, N, threads](benchmark::State & st) {
+    const Pool<T> & pool = [&]() -> const Pool<T> & {
+      if constexpr(std::is_same_v<T, double>) return pools->d;
+      else return pools->f;
+    }();
+    std::vector<T> out(N * static_cast<std::size_t>(a.outputSize));
+    std::size_t first = 0;
+    for(auto _ : st)
+    {
+      const Inputs<T> in = pool.at(r, first);
+      if(threads == 0) a.single(in, out.data(), N);
+      else a.batch(in, out.data(), N, threads);
+      benchmark::DoNotOptimize(out.data());
+      benchmark::ClobberMemory();
+      first = (first + N / 4) % (3 * N);
+    }
+    const double states = static_cast<double>(N) * static_cast<double>(st.iterations());
+    st.counters["states/s"] = benchmark::Counter(states, benchmark::Counter::kIsRate);
+    st.counters["states/s/core"] = benchmark::Counter(states / std::max(threads, 1), benchmark::Counter::kIsRate);
+  })->UseRealTime()->Unit(benchmark::kMicrosecond);
+}
+
+/// The check line of one algorithm (printed before the cells run).
+void check(const BatchRobotInfo & r, const BatchAlgorithm<double> & d, const BatchAlgorithm<float> & f, const Pools & pools)
+{
+  const std::size_t N = 256;
+  const std::size_t n = N * static_cast<std::size_t>(d.outputSize);
+  std::vector<double> single(n), batch(n);
+  std::vector<float> batchF(n);
+  d.single(pools.d.at(r, 0), single.data(), N);
+  d.batch(pools.d.at(r, 0), batch.data(), N, 1);
+  f.batch(pools.f.at(r, 0), batchF.data(), N, 1);
+  std::printf("check %s/%s: SIMD double vs single double %.3g, SIMD float vs single double %.3g (relative, %zu states)\n",
+              r.name, d.name, worstRelative(batch, single, N, d.outputSize), worstRelative(batchF, single, N, d.outputSize), N);
+}
+
+} // namespace
+
+int registerBatchRobot(const BatchRobotInfo & robot, std::vector<BatchAlgorithm<double>> d, std::vector<BatchAlgorithm<float>> f)
+{
+  const auto pools = makePools(robot, 4 * batchSize(robot));
+  std::printf("robot %s: nq %d, nv %d, %zu states per call, packs of %zu doubles / %zu floats\n", robot.name, robot.nq, robot.nv,
+              batchSize(robot), robot.widthDouble, robot.widthFloat);
+  for(std::size_t k = 0; k < d.size(); ++k)
+  {
+    check(robot, d[k], f[k], *pools);
+    registerCell(robot, d[k], pools, "single double", 0);
+    registerCell(robot, f[k], pools, "single float", 0);
+    registerCell(robot, d[k], pools, "SIMD double", 1);
+    registerCell(robot, f[k], pools, "SIMD float", 1);
+    registerCell(robot, d[k], pools, "SIMD double 2 threads", 2);
+    registerCell(robot, f[k], pools, "SIMD float 2 threads", 2);
+  }
+  return 0;
+}
+
+} // namespace rbdbench

@@ -146,8 +146,16 @@ fi
 results="$repo/bench/results"
 mkdir -p "$results"
 if [ $compile_time = 1 ]; then
-  # Every robot's header: lines, g++ -O2 compile time and memory (bench/results/latest-headers.md).
-  "$repo/bench/tools/header_costs.sh" "${dir[gcc]}" "$results/latest-headers.md"
+  # Header lines, g++ -O2 compile time and memory per robot (bench/results/latest-headers.md).
+  specs=("$repo/robots/ur5e.urdf" "$repo/robots/panda_arm.urdf" "$repo/robots/quadruped.urdf:floating"
+         "$repo/robots/quadruped.urdf:floating:derivatives" "$repo/robots/humanoid.urdf:floating")
+  shared_dir="$repo/../shared/robots"
+  if [ -d "$shared_dir" ]; then
+    specs+=("$shared_dir/ur5.urdf" "$shared_dir/panda.urdf" "$shared_dir/solo12.urdf:floating"
+            "$shared_dir/talos_reduced.urdf:floating" "$shared_dir/talos_reduced.urdf:floating:derivatives"
+            "$shared_dir/talos_full_v2.urdf:floating" "$shared_dir/romeo.urdf:floating")
+  fi
+  "$repo/bench/tools/header_costs.sh" "${dir[gcc]}/generator/rbdgen" "$results/latest-headers.md" "${specs[@]}"
 fi
 slug="$(echo "$cpu" | tr -c 'A-Za-z0-9\n' '-' | sed 's/--*/-/g; s/-$//')"
 pin_md=()

@@ -64,8 +64,10 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
                        const rbd::parsers::MimicCoupling & coupling = {});
 
 /// The batch header NS/batch.hpp (templates/batch.hpp.in) over the header of the same robot:
-/// provenance is its first comment lines; forwardDynamics and derivatives say which functions it has.
-std::string emitBatchHeader(const std::string & ns, const std::string & provenance, bool forwardDynamics, bool derivatives);
+/// provenance is its first comment lines; forwardDynamics and derivatives say which functions it has;
+/// codeNamespace holds the emitted code (ns, or ns::independent when mimic joints are coupled).
+std::string emitBatchHeader(const std::string & ns, const std::string & codeNamespace, const std::string & provenance,
+                            bool forwardDynamics, bool derivatives);
 
 /// Write files under outDir: each goes to a temporary file first and is renamed into place only
 /// once all were written; a file whose content did not change is left untouched (mtime kept).

@@ -137,6 +137,13 @@ const urdf::Joint * ownFloatingJoint(const urdf::ModelInterface & model, const s
 
 } // namespace
 
+std::map<std::string, sva::PTransformd> linkToBodyTransforms(const MultiBodyGraph & mbg, const std::string & base)
+{
+  std::map<std::string, sva::PTransformd> out = mbg.bodiesBaseTransform(base);
+  for(auto & entry : out) entry.second = entry.second.inv();
+  return out;
+}
+
 ParserResult fromUrdfString(const std::string & xml, const ParserOptions & opt, const std::string & sourceName)
 {
   const detail::CheckedUrdf checked = detail::checkUrdf(xml, sourceName, opt);
@@ -210,7 +217,7 @@ ParserResult fromUrdfString(const std::string & xml, const ParserOptions & opt, 
   res.mbc.zero(res.mb);
   rbd::forwardKinematics(res.mb, res.mbc);
   rbd::forwardVelocity(res.mb, res.mbc);
-  res.bodyBaseTransforms = res.mbg.bodiesBaseTransform(base);
+  res.bodyBaseTransforms = linkToBodyTransforms(res.mbg, base);
 
   // Limits, dynamics and mimics of the joints kept in the model.
   for(const rbd::Joint & j : res.mb.joints())

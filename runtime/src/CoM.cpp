@@ -9,13 +9,13 @@ void CoMJacobianTpl<T>::check(const MultiBodyTpl<T> & mb, const MultiBodyConfigT
 {
   const auto n = static_cast<std::size_t>(mb.nrBodies());
   if(coeff_.size() != n || jac_.cols() != mb.nrDof())
-    throw std::invalid_argument("CoMJacobian: the MultiBody does not match");
+    throw std::domain_error("CoMJacobian: the MultiBody does not match");
   if(mbc.bodyPosW.size() != n || mbc.motionSubspace.size() != n ||
      (needVelocity && (mbc.bodyVelB.size() != n || mbc.jointVelocity.size() != n || mbc.parentToSon.size() != n)))
-    throw std::invalid_argument("CoMJacobian: the MultiBodyConfig does not match the MultiBody");
+    throw std::domain_error("CoMJacobian: the MultiBodyConfig does not match the MultiBody");
   for(int j = 0; j < mb.nrJoints(); ++j)
     if(mbc.motionSubspace[static_cast<std::size_t>(j)].cols() != mb.joint(j).dof())
-      throw std::invalid_argument("CoMJacobian: motionSubspace of joint '" + mb.joint(j).name() +
+      throw std::domain_error("CoMJacobian: motionSubspace of joint '" + mb.joint(j).name() +
                                   "' does not match its dof");
 }
 
@@ -61,7 +61,7 @@ void checkCoMInputs(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mb
   if(acceleration) checkMatchBodyVector(mb, mbc.bodyAccB, "bodyAccB");
   T M = T(0);
   for(const auto & b : mb.bodies()) M += b.inertia().mass();
-  if(!(M > T(0))) throw std::invalid_argument("CoM: the total mass of the MultiBody is not positive");
+  if(!(M > T(0))) throw std::domain_error("CoM: the total mass of the MultiBody is not positive");
 }
 } // namespace
 
@@ -106,5 +106,8 @@ template sva::Vector3<long double> sComputeCoMAcceleration(const MultiBodyTpl<lo
                                                            const MultiBodyConfigTpl<long double> &);
 template class CoMJacobianTpl<double>;
 template class CoMJacobianTpl<long double>;
+
+template class CoMJacobianDummyTpl<double>;
+template class CoMJacobianDummyTpl<long double>;
 
 } // namespace rbd

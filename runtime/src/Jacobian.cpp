@@ -6,14 +6,22 @@ namespace rbd
 // --- checked variants ------------------------------------------------------------------------
 
 template<typename T>
+void JacobianTpl<T>::checkModel(const MultiBodyTpl<T> & mb) const
+{
+  auto same = [&](int i, const std::string & name) { return i >= 0 && i < mb.nrBodies() && mb.body(i).name() == name; };
+  bool ok = same(body_, bodyName_);
+  for(int j : jointsPath_) ok = ok && j < mb.nrJoints();
+  if(!ok) throw std::domain_error("Jacobian of body '" + bodyName_ + "': the MultiBody does not match");
+}
+
+template<typename T>
 void JacobianTpl<T>::check(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc, bool needVelocity) const
 {
-  if(body_ < 0 || body_ >= mb.nrBodies() || mb.body(body_).name() != bodyName_)
-    throw std::invalid_argument("Jacobian of body '" + bodyName_ + "': the MultiBody does not match");
+  checkModel(mb);
   auto bodyVec = [&](std::size_t n, const char * name) {
     if(static_cast<int>(n) != mb.nrBodies())
-      throw std::invalid_argument(std::string("Jacobian: ") + name + " has " + std::to_string(n) +
-                                  " entries, model has " + std::to_string(mb.nrBodies()) + " bodies");
+      throw std::domain_error(std::string("Jacobian: ") + name + " has " + std::to_string(n) + " entries, model has " +
+                              std::to_string(mb.nrBodies()) + " bodies");
   };
   bodyVec(mbc.bodyPosW.size(), "bodyPosW");
   bodyVec(mbc.motionSubspace.size(), "motionSubspace");
@@ -21,11 +29,20 @@ void JacobianTpl<T>::check(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<
   {
     bodyVec(mbc.bodyVelB.size(), "bodyVelB");
     bodyVec(mbc.jointVelocity.size(), "jointVelocity");
+    bodyVec(mbc.parentToSon.size(), "parentToSon");
   }
   for(int j : jointsPath_)
     if(mbc.motionSubspace[static_cast<std::size_t>(j)].cols() != mb.joint(j).dof())
-      throw std::invalid_argument("Jacobian: motionSubspace of joint '" + mb.joint(j).name() +
-                                  "' does not match its dof");
+      throw std::domain_error("Jacobian: motionSubspace of joint '" + mb.joint(j).name() + "' does not match its dof");
+}
+
+template<typename T>
+const typename JacobianTpl<T>::MatrixX & JacobianTpl<T>::sJacobian(const MultiBodyTpl<T> & mb,
+                                                                   const MultiBodyConfigTpl<T> & mbc,
+                                                                   const PTransformT & X_0_p)
+{
+  check(mb, mbc, false);
+  return jacobian(mb, mbc, X_0_p);
 }
 
 template<typename T>
@@ -54,12 +71,12 @@ const typename JacobianTpl<T>::MatrixX & JacobianTpl<T>::sVectorJacobian(const M
 }
 
 template<typename T>
-const typename JacobianTpl<T>::MatrixX & JacobianTpl<T>::sBodyVectorJacobian(const MultiBodyTpl<T> & mb,
+const typename JacobianTpl<T>::MatrixX & JacobianTpl<T>::sVectorBodyJacobian(const MultiBodyTpl<T> & mb,
                                                                              const MultiBodyConfigTpl<T> & mbc,
                                                                              const Vector3 & vec)
 {
   check(mb, mbc, false);
-  return bodyVectorJacobian(mb, mbc, vec);
+  return vectorBodyJacobian(mb, mbc, vec);
 }
 
 template<typename T>
@@ -80,10 +97,12 @@ const typename JacobianTpl<T>::MatrixX & JacobianTpl<T>::sBodyJacobianDot(const 
 
 template<typename T>
 void JacobianTpl<T>::sTranslateJacobian(const Eigen::Ref<const MatrixX> & jac, const MultiBodyConfigTpl<T> & mbc,
-                                        const Vector3 & offset, MatrixX & res) const
+                                        const Vector3 & point, MatrixX & res) const
 {
-  if(jac.rows() != 6) throw std::invalid_argument("translateJacobian: the Jacobian must have 6 rows");
-  translateJacobian(jac, mbc, offset, res);
+  if(jac.rows() != 6) throw std::domain_error("translateJacobian: the Jacobian must have 6 rows");
+  if(body_ >= static_cast<int>(mbc.bodyPosW.size()) || refBody_ >= static_cast<int>(mbc.bodyPosW.size()))
+    throw std::domain_error("translateJacobian: bodyPosW does not match the Jacobian's model");
+  translateJacobian(jac, mbc, point, res);
 }
 
 template<typename T>
@@ -91,11 +110,49 @@ void JacobianTpl<T>::sFullJacobian(const MultiBodyTpl<T> & mb, const Eigen::Ref<
                                    MatrixX & res) const
 {
   if(jac.cols() != dof_)
-    throw std::invalid_argument("fullJacobian: the Jacobian has " + std::to_string(jac.cols()) + " columns, expected " +
-                                std::to_string(dof_));
-  for(int j : jointsPath_)
-    if(j >= mb.nrJoints()) throw std::invalid_argument("fullJacobian: the MultiBody does not match");
+    throw std::domain_error("fullJacobian: the Jacobian has " + std::to_string(jac.cols()) + " columns, expected " +
+                            std::to_string(dof_));
+  checkModel(mb);
   fullJacobian(mb, jac, res);
+}
+
+template<typename T>
+MultiBodyTpl<T> JacobianTpl<T>::sSubMultiBody(const MultiBodyTpl<T> & mb) const
+{
+  checkModel(mb);
+  return subMultiBody(mb);
+}
+
+template<typename T>
+typename JacobianTpl<T>::MotionVecT JacobianTpl<T>::sVelocity(const MultiBodyTpl<T> & mb,
+                                                              const MultiBodyConfigTpl<T> & mbc) const
+{
+  check(mb, mbc, true);
+  return velocity(mb, mbc);
+}
+
+template<typename T>
+typename JacobianTpl<T>::MotionVecT JacobianTpl<T>::sBodyVelocity(const MultiBodyTpl<T> & mb,
+                                                                  const MultiBodyConfigTpl<T> & mbc) const
+{
+  check(mb, mbc, true);
+  return bodyVelocity(mb, mbc);
+}
+
+template<typename T>
+typename JacobianTpl<T>::MotionVecT JacobianTpl<T>::sNormalAcceleration(const MultiBodyTpl<T> & mb,
+                                                                        const MultiBodyConfigTpl<T> & mbc) const
+{
+  check(mb, mbc, true);
+  return normalAcceleration(mb, mbc);
+}
+
+template<typename T>
+typename JacobianTpl<T>::MotionVecT JacobianTpl<T>::sBodyNormalAcceleration(const MultiBodyTpl<T> & mb,
+                                                                            const MultiBodyConfigTpl<T> & mbc) const
+{
+  check(mb, mbc, true);
+  return bodyNormalAcceleration(mb, mbc);
 }
 
 template void computeNormalAccB(const MultiBodyTpl<double> &, const MultiBodyConfigTpl<double> &,

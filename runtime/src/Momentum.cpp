@@ -8,13 +8,13 @@ void CentroidalMomentumMatrixTpl<T>::check(const MultiBodyTpl<T> & mb, const Mul
 {
   const auto n = static_cast<std::size_t>(mb.nrBodies());
   if(weight_.size() != n || cmm_.cols() != mb.nrDof())
-    throw std::invalid_argument("CentroidalMomentumMatrix: the MultiBody does not match");
+    throw std::domain_error("CentroidalMomentumMatrix: the MultiBody does not match");
   if(mbc.bodyPosW.size() != n || mbc.motionSubspace.size() != n || mbc.bodyVelB.size() != n ||
      mbc.jointVelocity.size() != n)
-    throw std::invalid_argument("CentroidalMomentumMatrix: the MultiBodyConfig does not match the MultiBody");
+    throw std::domain_error("CentroidalMomentumMatrix: the MultiBodyConfig does not match the MultiBody");
   for(int j = 0; j < mb.nrJoints(); ++j)
     if(mbc.motionSubspace[static_cast<std::size_t>(j)].cols() != mb.joint(j).dof())
-      throw std::invalid_argument("CentroidalMomentumMatrix: motionSubspace of joint '" + mb.joint(j).name() +
+      throw std::domain_error("CentroidalMomentumMatrix: motionSubspace of joint '" + mb.joint(j).name() +
                                   "' does not match its dof");
 }
 

@@ -12,18 +12,18 @@ namespace rbd
 template<typename T>
 void MultiBodyGraphTpl<T>::addBody(const BodyT & b)
 {
-  if(b.name().empty()) throw std::invalid_argument("MultiBodyGraph: body name must not be empty");
-  if(hasBody(b.name())) throw std::invalid_argument("MultiBodyGraph: duplicate body name '" + b.name() + "'");
+  if(b.name().empty()) throw std::domain_error("MultiBodyGraph: body name must not be empty");
+  if(hasBody(b.name())) throw std::domain_error("MultiBodyGraph: duplicate body name '" + b.name() + "'");
   bodies_.push_back(b);
 }
 
 template<typename T>
 void MultiBodyGraphTpl<T>::addJoint(const JointT & j)
 {
-  if(j.name().empty()) throw std::invalid_argument("MultiBodyGraph: joint name must not be empty");
+  if(j.name().empty()) throw std::domain_error("MultiBodyGraph: joint name must not be empty");
   if(j.name() == rootJointName)
-    throw std::invalid_argument(std::string("MultiBodyGraph: joint name '") + rootJointName + "' is reserved");
-  if(hasJoint(j.name())) throw std::invalid_argument("MultiBodyGraph: duplicate joint name '" + j.name() + "'");
+    throw std::domain_error(std::string("MultiBodyGraph: joint name '") + rootJointName + "' is reserved");
+  if(hasJoint(j.name())) throw std::domain_error("MultiBodyGraph: duplicate joint name '" + j.name() + "'");
   joints_.push_back(j);
 }
 
@@ -35,11 +35,30 @@ void MultiBodyGraphTpl<T>::linkBodies(const std::string & b1Name, const PTransfo
   bodyPos(b1Name);
   bodyPos(b2Name);
   jointPos(jointName);
-  if(b1Name == b2Name) throw std::invalid_argument("MultiBodyGraph: joint '" + jointName + "' links body '" + b1Name + "' to itself");
+  if(b1Name == b2Name) throw std::domain_error("MultiBodyGraph: joint '" + jointName + "' links body '" + b1Name + "' to itself");
   for(const Link & l : links_)
     if(l.joint == jointName)
-      throw std::invalid_argument("MultiBodyGraph: joint '" + jointName + "' already links two bodies");
+      throw std::domain_error("MultiBodyGraph: joint '" + jointName + "' already links two bodies");
   links_.push_back(Link{b1Name, X_b1_j, b2Name, X_b2_j, jointName, isB1toB2});
+}
+
+template<typename T>
+std::shared_ptr<const typename MultiBodyGraphTpl<T>::Node> MultiBodyGraphTpl<T>::nodeByName(const std::string & name) const
+{
+  auto node = std::make_shared<Node>(Node{body(name), {}});
+  for(const Side & s : sides(name))
+  {
+    JointT j = joint(links_[s.link].joint);
+    j.forward(s.forward);
+    node->arcs.push_back(Arc{s.X_here_j, j, s.next});
+  }
+  return node;
+}
+
+template<typename T>
+bool MultiBodyGraphTpl<T>::movesB2(const Link & l) const
+{
+  return l.isB1toB2 == joint(l.joint).forward();
 }
 
 template<typename T>
@@ -79,14 +98,15 @@ void MultiBodyGraphTpl<T>::clear()
 }
 
 template<typename T>
-std::vector<typename MultiBodyGraphTpl<T>::Arc> MultiBodyGraphTpl<T>::arcs(const std::string & body) const
+std::vector<typename MultiBodyGraphTpl<T>::Side> MultiBodyGraphTpl<T>::sides(const std::string & body) const
 {
-  std::vector<Arc> out;
+  std::vector<Side> out;
   for(std::size_t k = 0; k < links_.size(); ++k)
   {
     const Link & l = links_[k];
-    if(l.b1 == body) out.push_back(Arc{k, l.X_b1_j, l.X_b2_j, l.b2, l.isB1toB2});
-    else if(l.b2 == body) out.push_back(Arc{k, l.X_b2_j, l.X_b1_j, l.b1, !l.isB1toB2});
+    const bool b1MovesB2 = movesB2(l);
+    if(l.b1 == body) out.push_back(Side{k, l.X_b1_j, l.X_b2_j, l.b2, b1MovesB2});
+    else if(l.b2 == body) out.push_back(Side{k, l.X_b2_j, l.X_b1_j, l.b1, !b1MovesB2});
   }
   return out;
 }
@@ -104,11 +124,11 @@ std::vector<typename MultiBodyGraphTpl<T>::Visit> MultiBodyGraphTpl<T>::walk(con
     visits.push_back(v);
     const int me = static_cast<int>(visits.size()) - 1;
     const PTransformT X_j_b = v.X_b_j.inv();
-    for(const Arc & a : arcs(v.body))
+    for(const Side & a : sides(v.body))
     {
       if(me > 0 && a.link == visits[static_cast<std::size_t>(me)].link) continue;
       if(seen.count(a.next))
-        throw std::invalid_argument("MultiBodyGraph: joint '" + links_[a.link].joint +
+        throw std::domain_error("MultiBodyGraph: joint '" + links_[a.link].joint +
                                     "' closes a kinematic loop (body '" + a.next + "' reached twice)");
       // Xt: from this body's moved frame (its joint frame) to the child joint frame on this side.
       visit(Visit{a.next, me, a.link, a.X_there_j, a.X_here_j * X_j_b, a.forward});
@@ -169,7 +189,7 @@ std::map<std::string, typename MultiBodyGraphTpl<T>::PTransformT>
 MultiBodyGraphTpl<T>::bodiesBaseTransform(const std::string & rootBodyName, const PTransformT & X_b0_j0) const
 {
   std::map<std::string, PTransformT> out;
-  for(const Visit & v : walk(rootBodyName, X_b0_j0)) out.emplace(v.body, v.X_b_j);
+  for(const Visit & v : walk(rootBodyName, X_b0_j0)) out.emplace(v.body, v.X_b_j.inv());
   return out;
 }
 
@@ -215,7 +235,7 @@ std::vector<std::string> MultiBodyGraphTpl<T>::subtreeBeyond(const std::string &
     }
   }
   if(out.empty())
-    throw std::invalid_argument("MultiBodyGraph: joint '" + jointName + "' is not reachable from body '" + rootBodyName + "'");
+    throw std::domain_error("MultiBodyGraph: joint '" + jointName + "' is not reachable from body '" + rootBodyName + "'");
   return out;
 }
 
@@ -264,7 +284,7 @@ void MultiBodyGraphTpl<T>::mergeSubBodies(const std::string & rootBodyName, cons
     auto it = jointPosByName.find(l.joint);
     const std::vector<T> q = it != jointPosByName.end() ? it->second : j.zeroParam();
     if(static_cast<int>(q.size()) != j.params())
-      throw std::invalid_argument("MultiBodyGraph: wrong number of parameters for joint '" + l.joint + "'");
+      throw std::domain_error("MultiBodyGraph: wrong number of parameters for joint '" + l.joint + "'");
     const PTransformT X_p_jp = (l.b2 == v.body) ? l.X_b1_j : l.X_b2_j; // parent side
     const PTransformT X_k_p = X_k_b[static_cast<std::size_t>(v.parent)];
     X_k_b[i] = v.X_b_j.inv() * j.pose(q) * X_p_jp * X_k_p;
@@ -283,13 +303,13 @@ void MultiBodyGraphTpl<T>::fixJoints(const std::map<std::string, std::vector<T>>
   {
     JointT & j = joints_[jointPos(name)];
     if(static_cast<int>(q.size()) != j.params())
-      throw std::invalid_argument("MultiBodyGraph: wrong number of parameters for joint '" + name + "'");
+      throw std::domain_error("MultiBodyGraph: wrong number of parameters for joint '" + name + "'");
     const PTransformT P = j.pose(q);
     for(Link & l : links_)
     {
       if(l.joint != name) continue;
       // Keep X_b1_b2 = X_b2_j^-1 P X_b1_j (or its inverse when the joint goes b2 -> b1).
-      if(l.isB1toB2) l.X_b2_j = P.inv() * l.X_b2_j;
+      if(movesB2(l)) l.X_b2_j = P.inv() * l.X_b2_j;
       else l.X_b1_j = P.inv() * l.X_b1_j;
     }
     j = JointT(JointType::Fixed, j.forward(), name);

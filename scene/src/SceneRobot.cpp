@@ -21,7 +21,7 @@ void rebuildTree(rbd::parsers::ParserResult & r, bool fixedBase)
   r.mbc.zero(r.mb);
   rbd::forwardKinematics(r.mb, r.mbc);
   rbd::forwardVelocity(r.mb, r.mbc);
-  r.bodyBaseTransforms = r.mbg.bodiesBaseTransform(base);
+  r.bodyBaseTransforms = rbd::parsers::linkToBodyTransforms(r.mbg, base);
 }
 
 } // namespace

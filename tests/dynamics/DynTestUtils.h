@@ -77,12 +77,12 @@ inline rbd::MultiBodyGraph allJointsGraph(rbdtest::Rng & rng)
   return g;
 }
 
-/// A tree of allJointsGraph and, for every body, X_b_j: from its frame in the graph to its frame
-/// in the tree (bodiesBaseTransform).
+/// A tree of allJointsGraph and, for every body, X_j_b: from its frame in the tree back to its frame
+/// in the graph (bodiesBaseTransform).
 struct RootedModel
 {
   rbd::MultiBody mb;
-  std::map<std::string, sva::PTransformd> X_b_j;
+  std::map<std::string, sva::PTransformd> X_j_b;
 };
 
 /// Trees of allJointsGraph: rooted at b0 (Fixed), at b7 (Free, every chain joint backward) and at

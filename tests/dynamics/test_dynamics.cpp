@@ -389,28 +389,28 @@ TEST(DynamicsChecked, ThrowOnWrongSizes)
   EXPECT_NO_THROW(fd.sForwardDynamics(s.mb, s.mbc));
   EXPECT_NO_THROW(aba.sForwardDynamics(s.mb, s.mbc));
   // a config of another model
-  EXPECT_THROW(id.sInverseDynamics(s.mb, other.mbc), std::invalid_argument);
-  EXPECT_THROW(fd.sForwardDynamics(s.mb, other.mbc), std::invalid_argument);
-  EXPECT_THROW(aba.sForwardDynamics(s.mb, other.mbc), std::invalid_argument);
+  EXPECT_THROW(id.sInverseDynamics(s.mb, other.mbc), std::domain_error);
+  EXPECT_THROW(fd.sForwardDynamics(s.mb, other.mbc), std::domain_error);
+  EXPECT_THROW(aba.sForwardDynamics(s.mb, other.mbc), std::domain_error);
   // one wrong vector at a time
   const auto last = static_cast<std::size_t>(s.mb.nrJoints() - 1);
   auto bad = s.mbc;
   bad.alphaD[last].push_back(0);
-  EXPECT_THROW(id.sInverseDynamics(s.mb, bad), std::invalid_argument);
+  EXPECT_THROW(id.sInverseDynamics(s.mb, bad), std::domain_error);
   bad = s.mbc;
   bad.jointTorque[last].push_back(0);
-  EXPECT_THROW(fd.sForwardDynamics(s.mb, bad), std::invalid_argument);
-  EXPECT_THROW(aba.sForwardDynamics(s.mb, bad), std::invalid_argument);
+  EXPECT_THROW(fd.sForwardDynamics(s.mb, bad), std::domain_error);
+  EXPECT_THROW(aba.sForwardDynamics(s.mb, bad), std::domain_error);
   bad = s.mbc;
   bad.force.pop_back();
-  EXPECT_THROW(id.sInverseDynamics(s.mb, bad), std::invalid_argument);
-  EXPECT_THROW(fd.sForwardDynamics(s.mb, bad), std::invalid_argument);
-  EXPECT_THROW(aba.sForwardDynamics(s.mb, bad), std::invalid_argument);
+  EXPECT_THROW(id.sInverseDynamics(s.mb, bad), std::domain_error);
+  EXPECT_THROW(fd.sForwardDynamics(s.mb, bad), std::domain_error);
+  EXPECT_THROW(aba.sForwardDynamics(s.mb, bad), std::domain_error);
   bad = s.mbc;
   bad.motionSubspace[last] = Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, s.mb.joint(int(last)).dof() + 1);
-  EXPECT_THROW(id.sInverseDynamics(s.mb, bad), std::invalid_argument);
-  EXPECT_THROW(fd.sForwardDynamics(s.mb, bad), std::invalid_argument);
-  EXPECT_THROW(aba.sForwardDynamics(s.mb, bad), std::invalid_argument);
+  EXPECT_THROW(id.sInverseDynamics(s.mb, bad), std::domain_error);
+  EXPECT_THROW(fd.sForwardDynamics(s.mb, bad), std::domain_error);
+  EXPECT_THROW(aba.sForwardDynamics(s.mb, bad), std::domain_error);
 }
 
 } // namespace

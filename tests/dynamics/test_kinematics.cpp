@@ -170,9 +170,9 @@ TEST(KinematicsAllJoints, RelativePosesIndependentOfRoot)
       rbd::forwardKinematics(mb, mbc);
       for(int i = 0; i < mb.nrBodies(); ++i)
       {
-        // body frame of the graph: X_0_b = X_b_j^-1 X_0_j
+        // body frame of the graph: X_0_b = X_j_b X_0_j
         const std::string & name = mb.body(i).name();
-        X_0_b[m][name] = models[m].X_b_j.at(name).inv() * mbc.bodyPosW[static_cast<std::size_t>(i)];
+        X_0_b[m][name] = models[m].X_j_b.at(name) * mbc.bodyPosW[static_cast<std::size_t>(i)];
       }
     }
     for(std::size_t m = 1; m < models.size(); ++m)
@@ -411,13 +411,13 @@ TEST(KinematicsChecked, EulerIntegrationThrowsOnWrongSizes)
   EXPECT_NO_THROW(rbd::sEulerIntegration(mb, mbc, 0.01));
   auto bad = mbc;
   bad.q[0].pop_back();
-  EXPECT_THROW(rbd::sEulerIntegration(mb, bad, 0.01), std::invalid_argument);
+  EXPECT_THROW(rbd::sEulerIntegration(mb, bad, 0.01), std::domain_error);
   bad = mbc;
   bad.alphaD.pop_back();
-  EXPECT_THROW(rbd::sEulerIntegration(mb, bad, 0.01), std::invalid_argument);
+  EXPECT_THROW(rbd::sEulerIntegration(mb, bad, 0.01), std::domain_error);
   bad = mbc;
   bad.alpha[0].push_back(0);
-  EXPECT_THROW(rbd::sEulerIntegration(mb, bad, 0.01), std::invalid_argument);
+  EXPECT_THROW(rbd::sEulerIntegration(mb, bad, 0.01), std::domain_error);
 }
 
 } // namespace

@@ -89,7 +89,8 @@ inline rbd::Joint::Type randomRoot(rbdtest::Rng & rng)
 }
 
 /// q ⊕ dq on one joint. Rev/Prism/Cylindrical: q += dq. Spherical: quat ← quat ⊗ exp(dω).
-/// Free: translation += R(quat) dv, then quat as Spherical. Planar: [x y] += R2(θ) [du dw], θ += dθ.
+/// Free: translation += R(quat) dv, then quat as Spherical. Planar ((x, y) in successor axes, RBDyn):
+/// [x y] += [du dw] - dθ J [x y] (J = [0 -1; 1 0], the first-order step), θ += dθ.
 template<typename T>
 void perturbJoint(const rbd::JointTpl<T> & joint, std::vector<T> & q, const T * dq)
 {
@@ -119,11 +120,9 @@ void perturbJoint(const rbd::JointTpl<T> & joint, std::vector<T> & q, const T * 
     }
     case rbd::Joint::Planar:
     {
-      using std::cos;
-      using std::sin;
-      const T c = cos(q[0]), s = sin(q[0]);
-      q[1] += c * dq[1] - s * dq[2];
-      q[2] += s * dq[1] + c * dq[2];
+      const T x = q[1], y = q[2];
+      q[1] += dq[1] + dq[0] * y;
+      q[2] += dq[2] - dq[0] * x;
       q[0] += dq[0];
       break;
     }

@@ -117,5 +117,5 @@ TYPED_TEST(IDIMTest, CheckedVariantThrows)
   rbd::MultiBodyConfigTpl<T> bad(other);
   kinext::kin(other, bad);
   rbd::IDIMTpl<T> idim(mb);
-  EXPECT_THROW(idim.sComputeY(mb, bad), std::invalid_argument);
+  EXPECT_THROW(idim.sComputeY(mb, bad), std::domain_error);
 }

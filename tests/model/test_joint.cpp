@@ -73,9 +73,9 @@ std::vector<T> randomParam(rbdtest::Rng & rng, const rbd::JointTpl<T> & j)
   return q;
 }
 
-/// q(t) for a constant alpha, as docs/DESIGN.md integrates it: Rev/Prism/Cyl q + alpha t; Planar
-/// theta + thetaDot t, [x y] + R2(theta) [v_u v_w] t; Spherical/Free quat (x) exp(w t), translation
-/// + R(quat) v t.
+/// q(t) for a constant alpha, as docs/DESIGN.md integrates it (to first order in t): Rev/Prism/Cyl
+/// q + alpha t; Planar ((x, y) in successor axes) theta + thetaDot t, [x + (v_u + thetaDot y) t,
+/// y + (v_w - thetaDot x) t]; Spherical/Free quat (x) exp(w t), translation + R(quat) v t.
 template<typename T>
 std::vector<T> path(const rbd::JointTpl<T> & j, const std::vector<T> & q, const std::vector<T> & a, T t)
 {
@@ -84,10 +84,9 @@ std::vector<T> path(const rbd::JointTpl<T> & j, const std::vector<T> & q, const 
   {
     case rbd::Joint::Planar:
     {
-      const T c = std::cos(q[0]), s = std::sin(q[0]);
       out[0] += a[0] * t;
-      out[1] += (c * a[1] - s * a[2]) * t;
-      out[2] += (s * a[1] + c * a[2]) * t;
+      out[1] += (a[1] + a[0] * q[2]) * t;
+      out[2] += (a[2] - a[0] * q[1]) * t;
       return out;
     }
     case rbd::Joint::Spherical:
@@ -141,7 +140,7 @@ TYPED_TEST(JointTest, SizesAndZeroParamIsIdentity)
       EXPECT_MAT_NEAR(j.pose(j.zeroParam()).matrix(), Mat6<T>::Identity(), 0.0);
       EXPECT_EQ(static_cast<int>(j.zeroDof().size()), dof);
     }
-  EXPECT_THROW(J(J::Rev, Vec3<T>::Zero(), true, "zero"), std::invalid_argument);
+  EXPECT_THROW(J(J::Rev, Vec3<T>::Zero(), true, "zero"), std::domain_error);
 }
 
 TYPED_TEST(JointTest, ForwardPosesMatchClosedForms)
@@ -172,14 +171,20 @@ TYPED_TEST(JointTest, ForwardPosesMatchClosedForms)
   EXPECT_MAT_NEAR(cyl.rotation(), Mat3<T>(rodrigues(a, q).transpose()), tol<T>());
   EXPECT_MAT_NEAR(cyl.translation(), Vec3<T>(a * d), tol<T>());
 
-  // Planar: (u, w, n) orthonormal right-handed, pose = rotation about n, translation x u + y w.
+  // Planar: (u, w, n) orthonormal right-handed, pose = rotation about n, translation R(n, q) (x u + y w)
+  // (RBDyn: PTransform(RotZ(q), RotZ(q)^T (x, y, 0)), (x, y) in successor axes).
   const J planar(J::Planar, a, true, "");
   EXPECT_NEAR(static_cast<double>(planar.planeU().dot(a)), 0.0, tol<T>());
   EXPECT_NEAR(static_cast<double>(planar.planeU().norm()), 1.0, tol<T>());
   EXPECT_MAT_NEAR(planar.planeW(), Vec3<T>(a.cross(planar.planeU())), tol<T>());
   const auto pl = planar.pose({q, x, y});
   EXPECT_MAT_NEAR(pl.rotation(), Mat3<T>(rodrigues(a, q).transpose()), tol<T>());
-  EXPECT_MAT_NEAR(pl.translation(), Vec3<T>(x * planar.planeU() + y * planar.planeW()), tol<T>());
+  EXPECT_MAT_NEAR(pl.translation(), Vec3<T>(rodrigues(a, q) * (x * planar.planeU() + y * planar.planeW())), tol<T>());
+  // the z normal of RBDyn: u = x, w = y, and its closed form
+  const auto plz = J(J::Planar, Vec3<T>::UnitZ(), true, "").pose({q, x, y});
+  EXPECT_MAT_NEAR(plz.rotation(), Mat3<T>(sva::RotZ(q)), tol<T>());
+  EXPECT_MAT_NEAR(plz.translation(), Vec3<T>(std::cos(q) * x - std::sin(q) * y, std::sin(q) * x + std::cos(q) * y, T(0)),
+                  tol<T>());
   EXPECT_NEAR(static_cast<double>(pl.translation().dot(a)), 0.0, tol<T>());
 
   // Spherical / Free: E = R(quat)^T; a non-unit quaternion stands for its normalisation.

@@ -163,19 +163,20 @@ void rk4Lines(const MovingJoint & mj, Rk4Lines & L)
       return;
     }
     case JointType::Planar:
-      L.map += fmt::format("  P({}, {}) = S(1);\n  P.template block<2, 2>({}, {}) = detail::rotation2<S>(q[{}]);\n", qi, vi,
-                           qi + 1, vi + 1, qi);
-      L.projection += fmt::format("  out.row({}) = Y.row({});\n"
-                                  "  out.template middleRows<2>({}) = detail::rotation2<S>(y[{}]).transpose() * Y.template middleRows<2>({});\n",
-                                  vi, qi, vi + 1, qi, qi + 1);
-      // d[x y]/dt = R2(theta) [v_u v_w]: d/dtheta = R2(theta) J [v_u v_w], J = [0 -1; 1 0]
-      L.change += fmt::format("  out.row({0}) = X.row({1});\n"
-                              "  {{\n"
-                              "    const Eigen::Matrix<S, 2, 2> R = detail::rotation2<S>(q[{0}]);\n"
-                              "    const Eigen::Matrix<S, 2, 1> dR = R * Eigen::Matrix<S, 2, 1>(-alpha[{3}], alpha[{2}]);\n"
-                              "    out.template middleRows<2>({4}) = dR * Y.row({0}) + R * X.template middleRows<2>({2});\n"
-                              "  }}\n",
-                              qi, vi, vi + 1, vi + 2, qi + 1);
+      // q = [theta x y], (x, y) in successor axes: q (+) d = [theta + d0; (x, y) + (d1, d2) - d0 J (x, y)],
+      // J = [0 -1; 1 0]; its tangent map P = [1 0 0; y 1 0; -x 0 1] and projection N = P^-1
+      L.map += fmt::format("  P({0}, {1}) = S(1);\n  P({2}, {1}) = q[{4}];\n  P({3}, {1}) = -q[{2}];\n"
+                           "  P({2}, {5}) = S(1);\n  P({3}, {6}) = S(1);\n",
+                           qi, vi, qi + 1, qi + 2, qi + 2, vi + 1, vi + 2);
+      L.projection += fmt::format("  out.row({0}) = Y.row({3});\n"
+                                  "  out.row({1}) = Y.row({4}) - y[{5}] * Y.row({3});\n"
+                                  "  out.row({2}) = Y.row({5}) + y[{4}] * Y.row({3});\n",
+                                  vi, vi + 1, vi + 2, qi, qi + 1, qi + 2);
+      // d[x y]/dt = [v_u + thetadot y; v_w - thetadot x]
+      L.change += fmt::format("  out.row({0}) = X.row({3});\n"
+                              "  out.row({1}) = alpha[{3}] * Y.row({2}) + q[{2}] * X.row({3}) + X.row({4});\n"
+                              "  out.row({2}) = -alpha[{3}] * Y.row({1}) - q[{1}] * X.row({3}) + X.row({5});\n",
+                              qi, qi + 1, qi + 2, vi, vi + 1, vi + 2);
       return;
     default:
       throw std::logic_error("joint '" + mj.name + "': no integration rule for its type");
@@ -203,7 +204,6 @@ std::string sceneStepDerivatives(const RobotModel & rm, rbd::scene::Integrator i
       {"spherical", !rk4 && spherical},
       {"free", !rk4 && free},
       {"planar_blocks", !rk4 && planar},
-      {"planar", planar},
       {"quaternion", free || spherical},
       {"rk4", rk4},
       {"euler", !rk4},

@@ -114,9 +114,12 @@ JointKernel emitJointKernel(Block & b, const MovingJoint & mj, const std::string
     {
       const auto [s, c] = sincos(mj.qIndex);
       K.Xj.E = axisRotationT(b, a, c, s, false, h);
+      // r = R(n, θ) (x u + y w) = (c x − s y) u + (s x + c y) w   (RBDyn: (x, y) in successor axes)
       const Scalar x = Scalar::var(qAt(q, mj.qIndex + 1)), y = Scalar::var(qAt(q, mj.qIndex + 2));
+      const Scalar ru = b.sum({Term{1, {c, x}}, Term{-1, {s, y}}}, h + "_ru");
+      const Scalar rw = b.sum({Term{1, {s, x}}, Term{1, {c, y}}}, h + "_rw");
       const Eigen::Vector3d u = j.planeU(), w = j.planeW();
-      for(int i = 0; i < 3; ++i) K.Xj.r[i] = b.sum({Term{u(i), {x}}, Term{w(i), {y}}}, fmt::format("{}_r{}", h, i));
+      for(int i = 0; i < 3; ++i) K.Xj.r[i] = b.sum({Term{u(i), {ru}}, Term{w(i), {rw}}}, fmt::format("{}_r{}", h, i));
       break;
     }
     case rbd::Joint::Spherical:

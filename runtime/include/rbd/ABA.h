@@ -113,7 +113,7 @@ public:
     }
   }
 
-  /// Checked variant: throws std::invalid_argument on a size mismatch.
+  /// Checked variant: throws std::domain_error on a size mismatch.
   void sForwardDynamics(const MultiBodyTpl<T> & mb, MultiBodyConfigTpl<T> & mbc);
 
   /// Articulated-body inertia I^A_i of each body after the last call (body coordinates).

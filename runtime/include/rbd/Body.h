@@ -1,6 +1,7 @@
 #pragma once
 // A rigid body: spatial inertia at the body origin, in body coordinates, and a unique name.
 
+#include <ostream>
 #include <string>
 #include <utility>
 
@@ -43,5 +44,12 @@ private:
 };
 
 using Body = BodyTpl<double>;
+
+/// "Body: name" (RBDyn's format).
+template<typename T>
+std::ostream & operator<<(std::ostream & out, const BodyTpl<T> & b)
+{
+  return out << "Body: " << b.name();
+}
 
 } // namespace rbd

@@ -67,7 +67,7 @@ sva::Vector3<T> computeCoMAcceleration(const MultiBodyTpl<T> & mb, const MultiBo
   return mcdd / M;
 }
 
-/// Checked variants: throw std::invalid_argument on a size mismatch or a zero total mass.
+/// Checked variants: throw std::domain_error on a size mismatch or a zero total mass.
 template<typename T>
 sva::Vector3<T> sComputeCoM(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc);
 template<typename T>
@@ -110,7 +110,7 @@ public:
   Vector3 normalAcceleration(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc,
                              const std::vector<MotionVecT> & normalAccB) const;
 
-  // Checked variants: throw std::invalid_argument when mb/mbc do not match.
+  // Checked variants: throw std::domain_error when mb/mbc do not match.
   const MatrixX & sJacobian(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc);
   const MatrixX & sJacobianDot(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc);
   Vector3 sVelocity(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc) const;
@@ -157,7 +157,7 @@ template<typename T>
 void CoMJacobianTpl<T>::weight(const MultiBodyTpl<T> & mb, std::vector<T> w)
 {
   if(static_cast<int>(w.size()) != mb.nrBodies())
-    throw std::invalid_argument("CoMJacobian: " + std::to_string(w.size()) + " weights, model has " +
+    throw std::domain_error("CoMJacobian: " + std::to_string(w.size()) + " weights, model has " +
                                 std::to_string(mb.nrBodies()) + " bodies");
   weight_ = std::move(w);
   updateInertialParameters(mb);
@@ -289,6 +289,95 @@ typename CoMJacobianTpl<T>::Vector3 CoMJacobianTpl<T>::normalAcceleration(
   return a;
 }
 
+/// The CoM Jacobian by its definition (RBDyn's "simple but slow" CoMJacobianDummy):
+///   J_com = sum_i w_i m_i J_v,i / M,   M = sum_i m_i,
+/// with J_v,i the linear rows of body i's Jacobian at its centre of mass (world axes). jacobianDot
+/// sums the Jacobians' derivatives the same way. CoMJacobian computes the same in O(n).
+template<typename T>
+class CoMJacobianDummyTpl
+{
+public:
+  using MatrixX = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
+
+  CoMJacobianDummyTpl() = default;
+  explicit CoMJacobianDummyTpl(const MultiBodyTpl<T> & mb)
+  : CoMJacobianDummyTpl(mb, std::vector<T>(static_cast<std::size_t>(mb.nrBodies()), T(1)))
+  {
+  }
+  /// @param weight One weight per body (std::domain_error otherwise).
+  CoMJacobianDummyTpl(const MultiBodyTpl<T> & mb, std::vector<T> weight) : weight_(std::move(weight))
+  {
+    if(static_cast<int>(weight_.size()) != mb.nrBodies())
+      throw std::domain_error("CoMJacobianDummy: " + std::to_string(weight_.size()) + " weights for " +
+                              std::to_string(mb.nrBodies()) + " bodies");
+    for(int i = 0; i < mb.nrBodies(); ++i)
+    {
+      const auto & I = mb.body(i).inertia();
+      const sva::Vector3<T> c = I.mass() > T(0) ? sva::Vector3<T>(I.momentum() / I.mass()) : sva::Vector3<T>::Zero();
+      jacs_.emplace_back(mb, mb.body(i).name(), c);
+      totalMass_ += I.mass();
+    }
+    jac_ = MatrixX::Zero(3, mb.nrDof());
+    jacDot_ = MatrixX::Zero(3, mb.nrDof());
+  }
+
+  /// Use bodyPosW and motionSubspace (FK). Fill the 3 x nrDof CoM Jacobian.
+  const MatrixX & jacobian(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc)
+  {
+    return sum(mb, jac_, [&](JacobianTpl<T> & J) -> const MatrixX & { return J.jacobian(mb, mbc); });
+  }
+  /// Use bodyPosW, motionSubspace (FK), bodyVelB and jointVelocity (FV). Fill d/dt jacobian().
+  const MatrixX & jacobianDot(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc)
+  {
+    return sum(mb, jacDot_, [&](JacobianTpl<T> & J) -> const MatrixX & { return J.jacobianDot(mb, mbc); });
+  }
+  /// The last results.
+  const MatrixX & jacobian() const { return jac_; }
+  const MatrixX & jacobianDot() const { return jacDot_; }
+
+  /// Checked variants: std::domain_error when mb / mbc do not match.
+  const MatrixX & sJacobian(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc)
+  {
+    check(mb, mbc);
+    return jacobian(mb, mbc);
+  }
+  const MatrixX & sJacobianDot(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc)
+  {
+    check(mb, mbc);
+    return jacobianDot(mb, mbc);
+  }
+
+private:
+  /// out = sum_i w_i m_i (linear rows of perBody(J_i), scattered to nrDof columns) / M
+  template<typename PerBody>
+  const MatrixX & sum(const MultiBodyTpl<T> & mb, MatrixX & out, PerBody perBody)
+  {
+    out.setZero();
+    for(std::size_t i = 0; i < jacs_.size(); ++i)
+    {
+      if(jacs_[i].dof() == 0) continue; // (no block of an empty matrix: Eigen offsets a null pointer)
+      const T k = weight_[i] * mb.body(static_cast<int>(i)).inertia().mass() / totalMass_;
+      jacs_[i].addFullJacobian(mb, MatrixX(k * perBody(jacs_[i]).template bottomRows<3>()), out);
+    }
+    return out;
+  }
+  void check(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc) const
+  {
+    if(static_cast<int>(jacs_.size()) != mb.nrBodies() || jac_.cols() != mb.nrDof())
+      throw std::domain_error("CoMJacobianDummy: the MultiBody does not match");
+    if(static_cast<int>(mbc.bodyPosW.size()) != mb.nrBodies() || mbc.motionSubspace.size() != mbc.bodyPosW.size() ||
+       mbc.bodyVelB.size() != mbc.bodyPosW.size() || mbc.jointVelocity.size() != mbc.bodyPosW.size())
+      throw std::domain_error("CoMJacobianDummy: the MultiBodyConfig does not match the MultiBody");
+  }
+
+  std::vector<T> weight_;
+  std::vector<JacobianTpl<T>> jacs_;
+  T totalMass_ = T(0);
+  MatrixX jac_, jacDot_;
+};
+
+using CoMJacobianDummy = CoMJacobianDummyTpl<double>;
+
 extern template sva::Vector3<double> computeCoM(const MultiBodyTpl<double> &, const MultiBodyConfigTpl<double> &);
 extern template sva::Vector3<long double> computeCoM(const MultiBodyTpl<long double> &,
                                                      const MultiBodyConfigTpl<long double> &);
@@ -311,6 +400,8 @@ extern template sva::Vector3<double> sComputeCoMAcceleration(const MultiBodyTpl<
                                                              const MultiBodyConfigTpl<double> &);
 extern template sva::Vector3<long double> sComputeCoMAcceleration(const MultiBodyTpl<long double> &,
                                                                   const MultiBodyConfigTpl<long double> &);
+extern template class CoMJacobianDummyTpl<double>;
+extern template class CoMJacobianDummyTpl<long double>;
 extern template class CoMJacobianTpl<double>;
 extern template class CoMJacobianTpl<long double>;
 

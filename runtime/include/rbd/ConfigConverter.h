@@ -22,20 +22,38 @@ public:
   /// and the bodies present in both.
   ConfigConverterTpl(const MultiBodyTpl<T> & mb1, const MultiBodyTpl<T> & mb2);
 
-  /// Checked construction: throws std::invalid_argument unless both models have the same bodies and
+  /// Checked construction: throws std::domain_error unless both models have the same bodies and
   /// the same non-root joints (names, types, params and dof).
   static ConfigConverterTpl sConstructor(const MultiBodyTpl<T> & mb1, const MultiBodyTpl<T> & mb2);
 
   /// Use q, alpha, alphaD, jointTorque (non-root joints) and force (bodies) of mbc1.
   /// Fill the same fields of mbc2 (its root joint and unmatched entries are left untouched).
   void convert(const MultiBodyConfigTpl<T> & mbc1, MultiBodyConfigTpl<T> & mbc2) const;
-  /// Checked variant: throws std::invalid_argument when a vector does not match its model.
+  /// Checked variant: throws std::domain_error when a vector does not match its model.
   void sConvert(const MultiBodyConfigTpl<T> & mbc1, MultiBodyConfigTpl<T> & mbc2) const;
 
-  /// Per-joint values (q-like or alpha-like) in mb1's joint order -> mb2's joint order.
-  void convertJoint(const std::vector<std::vector<T>> & v1, std::vector<std::vector<T>> & v2) const
+  /// Per-joint values (q-like, alpha-like, or any per-joint V) in mb1's joint order -> mb2's joint
+  /// order (the root joint's entry of v2 is left untouched).
+  template<typename V>
+  void convertJoint(const std::vector<V> & v1, std::vector<V> & v2) const
   {
     for(const auto & [i1, i2] : jointMap_) v2[static_cast<std::size_t>(i2)] = v1[static_cast<std::size_t>(i1)];
+  }
+  /// Same into a new vector of v1's size (RBDyn's form; unmatched entries value-initialised).
+  template<typename V>
+  std::vector<V> convertJoint(const std::vector<V> & v1) const
+  {
+    std::vector<V> v2(v1.size());
+    convertJoint(v1, v2);
+    return v2;
+  }
+  /// Checked variant: std::domain_error unless v1 and v2 have one entry per joint of their model.
+  template<typename V>
+  void sConvertJoint(const std::vector<V> & v1, std::vector<V> & v2) const
+  {
+    if(static_cast<int>(v1.size()) != mb1_.nrJoints() || static_cast<int>(v2.size()) != mb2_.nrJoints())
+      throw std::domain_error("ConfigConverter: the per-joint vectors do not match the models");
+    convertJoint(v1, v2);
   }
   /// Per-body values in mb1's body order -> mb2's body order.
   template<typename V>
@@ -74,19 +92,19 @@ template<typename T>
 ConfigConverterTpl<T> ConfigConverterTpl<T>::sConstructor(const MultiBodyTpl<T> & mb1, const MultiBodyTpl<T> & mb2)
 {
   if(mb1.nrBodies() != mb2.nrBodies())
-    throw std::invalid_argument("ConfigConverter: the models have " + std::to_string(mb1.nrBodies()) + " and " +
+    throw std::domain_error("ConfigConverter: the models have " + std::to_string(mb1.nrBodies()) + " and " +
                                 std::to_string(mb2.nrBodies()) + " bodies");
   for(const auto & b : mb1.bodies())
     if(!mb2.hasBody(b.name()))
-      throw std::invalid_argument("ConfigConverter: body '" + b.name() + "' is missing from the second model");
+      throw std::domain_error("ConfigConverter: body '" + b.name() + "' is missing from the second model");
   for(int i = 1; i < mb1.nrJoints(); ++i)
   {
     const JointTpl<T> & j1 = mb1.joint(i);
     if(!mb2.hasJoint(j1.name()) || mb2.jointIndexByName(j1.name()) == 0)
-      throw std::invalid_argument("ConfigConverter: joint '" + j1.name() + "' is not a non-root joint of the second model");
+      throw std::domain_error("ConfigConverter: joint '" + j1.name() + "' is not a non-root joint of the second model");
     const JointTpl<T> & j2 = mb2.joint(mb2.jointIndexByName(j1.name()));
     if(j1.type() != j2.type() || j1.params() != j2.params() || j1.dof() != j2.dof())
-      throw std::invalid_argument("ConfigConverter: joint '" + j1.name() + "' differs between the models");
+      throw std::domain_error("ConfigConverter: joint '" + j1.name() + "' differs between the models");
   }
   return ConfigConverterTpl(mb1, mb2);
 }

@@ -6,8 +6,9 @@
 //   Spherical: quat ← quat ⊗ exp(ω)                         (ω in the successor frame)
 //   Free: exact SE(3) exponential of the body twist [ω; v]:  quat ← quat ⊗ exp(ω),
 //         r ← r + R(quat) V(ω) v,  V(ω) = 1 + (1 - cos θ)/θ² ω^ + (θ - sin θ)/θ³ ω^², θ = |ω|
-//   Planar: exact SE(2) exponential of [θ̇; v_u; v_w]:      [x y] ← [x y] + R2(θ) V2(θ̇) [v_u v_w],
-//         θ ← θ + θ̇,  V2(φ) = [sin φ/φ, -(1 - cos φ)/φ; (1 - cos φ)/φ, sin φ/φ]
+//   Planar (q = [θ x y], (x, y) the successor's origin in successor axes, RBDyn): exact SE(2)
+//         exponential of [φ; v_u; v_w]:   [x y] ← R2(φ)ᵀ ([x y] + V2(φ) [v_u v_w]),  θ ← θ + φ,
+//         V2(φ) = [sin φ/φ, -(1 - cos φ)/φ; (1 - cos φ)/φ, sin φ/φ]
 // Quaternions are normalised after each step. Both exponentials are exact for a constant velocity
 // and agree to first order with the Euler updates of docs/DESIGN.md.
 
@@ -69,12 +70,12 @@ void integrateJoint(JointType::Type type, T * q, const T * dq)
       break;
     case JointType::Planar:
     {
-      // [x y] += R2(θ) V2(φ) [v_u v_w], with sin φ/φ = sinc φ and (1 - cos φ)/φ = φ sinc²(φ/2)/2
+      // [x y] ← R2(φ)ᵀ ([x y] + V2(φ) [v_u v_w]), sin φ/φ = sinc φ, (1 - cos φ)/φ = φ sinc²(φ/2)/2
       const T phi = dq[0], s = sva::sinc(phi), c = phi * T(0.5) * sva::sinc(phi / T(2)) * sva::sinc(phi / T(2));
-      const T du = s * dq[1] - c * dq[2], dw = c * dq[1] + s * dq[2];
-      const T ct = cos(q[0]), st = sin(q[0]);
-      q[1] += ct * du - st * dw;
-      q[2] += st * du + ct * dw;
+      const T x = q[1] + s * dq[1] - c * dq[2], y = q[2] + c * dq[1] + s * dq[2];
+      const T cp = cos(phi), sp = sin(phi);
+      q[1] = cp * x + sp * y;
+      q[2] = -sp * x + cp * y;
       q[0] += phi;
       break;
     }
@@ -130,7 +131,7 @@ Eigen::Matrix<T, Eigen::Dynamic, 1> integrateConfiguration(const MultiBodyTpl<T>
 
 /// dq/dt (size nrParams) for the velocity alpha (size nrDof) at q (size nrParams): the derivative
 /// of q ⊕ (alpha t) at t = 0. Quaternions: d/dt quat = quat ⊗ [0; ω]/2; Free: dr/dt = R(quat) v;
-/// Planar: d[x y]/dt = R2(θ) [v_u v_w]; other joints: alpha.
+/// Planar: d[x y]/dt = [v_u + θ̇ y, v_w - θ̇ x]; other joints: alpha.
 template<typename T>
 Eigen::Matrix<T, Eigen::Dynamic, 1> configurationDerivative(const MultiBodyTpl<T> & mb,
                                                             const Eigen::Matrix<T, Eigen::Dynamic, 1> & q,
@@ -148,10 +149,10 @@ Eigen::Matrix<T, Eigen::Dynamic, 1> configurationDerivative(const MultiBodyTpl<T
     switch(type)
     {
       case JointType::Planar:
-        // d[x y]/dt = R2(θ) [v_u v_w]
+        // p = R2(θ) [x y] moves with R2(θ) [v_u v_w]: d[x y]/dt = [v_u v_w] - θ̇ J [x y], J = [0 -1; 1 0]
         out[0] = a[0];
-        out[1] = cos(qi[0]) * a[1] - sin(qi[0]) * a[2];
-        out[2] = sin(qi[0]) * a[1] + cos(qi[0]) * a[2];
+        out[1] = a[1] + a[0] * qi[2];
+        out[2] = a[2] - a[0] * qi[1];
         break;
       case JointType::Spherical:
       case JointType::Free:
@@ -173,27 +174,32 @@ Eigen::Matrix<T, Eigen::Dynamic, 1> configurationDerivative(const MultiBodyTpl<T
   return qd;
 }
 
+/// q ← q ⊕ (alpha step + alphaD step²/2) for one joint (RBDyn's deprecated name; its current
+/// jointIntegration, NumericalIntegration.h, integrates the constant-acceleration trajectory).
+template<typename T>
+void eulerJointIntegration(JointType::Type type, const std::vector<T> & alpha, const std::vector<T> & alphaD,
+                           sva::detail::identity_t<T> step, std::vector<T> & q)
+{
+  T dq[6];
+  for(std::size_t c = 0; c < alpha.size(); ++c) dq[c] = alpha[c] * step + T(0.5) * alphaD[c] * step * step;
+  detail::integrateJoint(type, q.data(), dq);
+}
+
 /// Use alpha and alphaD. Fill q ← q ⊕ (alpha step + alphaD step²/2) and alpha ← alpha + alphaD step
 /// (the alphaD step²/2 term as in RBDyn: exact for constant acceleration on vector joints).
 template<typename T>
 void eulerIntegration(const MultiBodyTpl<T> & mb, MultiBodyConfigTpl<T> & mbc,
                       typename MultiBodyConfigTpl<T>::Scalar step)
 {
-  T dq[6];
   for(int i = 0; i < mb.nrJoints(); ++i)
   {
     const auto k = static_cast<std::size_t>(i);
-    const std::size_t dof = mbc.alpha[k].size();
-    for(std::size_t c = 0; c < dof; ++c)
-    {
-      dq[c] = mbc.alpha[k][c] * step + T(0.5) * mbc.alphaD[k][c] * step * step;
-      mbc.alpha[k][c] += mbc.alphaD[k][c] * step;
-    }
-    detail::integrateJoint(mb.joint(i).type(), mbc.q[k].data(), dq);
+    eulerJointIntegration(mb.joint(i).type(), mbc.alpha[k], mbc.alphaD[k], step, mbc.q[k]);
+    for(std::size_t c = 0; c < mbc.alpha[k].size(); ++c) mbc.alpha[k][c] += mbc.alphaD[k][c] * step;
   }
 }
 
-/// Checked variant: throws std::invalid_argument when q, alpha or alphaD do not match the model.
+/// Checked variant: throws std::domain_error when q, alpha or alphaD do not match the model.
 template<typename T>
 void sEulerIntegration(const MultiBodyTpl<T> & mb, MultiBodyConfigTpl<T> & mbc,
                        typename MultiBodyConfigTpl<T>::Scalar step);

@@ -24,7 +24,7 @@ void forwardAcceleration(const MultiBodyTpl<T> & mb, MultiBodyConfigTpl<T> & mbc
   }
 }
 
-/// Checked variant: throws std::invalid_argument when alphaD does not match the model.
+/// Checked variant: throws std::domain_error when alphaD does not match the model.
 template<typename T>
 void sForwardAcceleration(const MultiBodyTpl<T> & mb, MultiBodyConfigTpl<T> & mbc,
                           const sva::MotionVec<T> & A_0 = sva::MotionVec<T>::Zero());

@@ -67,7 +67,7 @@ public:
     vectorToDof<T>(alphaD_, mbc.alphaD);
   }
 
-  /// Checked variant: throws std::invalid_argument on a size mismatch.
+  /// Checked variant: throws std::domain_error on a size mismatch.
   void sForwardDynamics(const MultiBodyTpl<T> & mb, MultiBodyConfigTpl<T> & mbc);
 
   /// Use the outputs of forwardKinematics (parentToSon, motionSubspace). Fill H() and

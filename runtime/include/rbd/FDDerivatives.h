@@ -53,7 +53,7 @@ public:
     dalphaDDalpha_.noalias() = -Minv_ * id_.dtauDalpha();
   }
 
-  /// Checked variant: throws std::invalid_argument on a size mismatch.
+  /// Checked variant: throws std::domain_error on a size mismatch.
   void sForwardDynamicsDerivatives(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc);
 
   const VectorX & alphaD() const { return alphaDVec_; }

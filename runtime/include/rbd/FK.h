@@ -23,7 +23,7 @@ void forwardKinematics(const MultiBodyTpl<T> & mb, MultiBodyConfigTpl<T> & mbc)
   }
 }
 
-/// Checked variant: throws std::invalid_argument when q does not match the model.
+/// Checked variant: throws std::domain_error when q does not match the model.
 template<typename T>
 void sForwardKinematics(const MultiBodyTpl<T> & mb, MultiBodyConfigTpl<T> & mbc);
 

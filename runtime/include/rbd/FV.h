@@ -25,7 +25,7 @@ void forwardVelocity(const MultiBodyTpl<T> & mb, MultiBodyConfigTpl<T> & mbc)
   }
 }
 
-/// Checked variant: throws std::invalid_argument when alpha does not match the model.
+/// Checked variant: throws std::domain_error when alpha does not match the model.
 template<typename T>
 void sForwardVelocity(const MultiBodyTpl<T> & mb, MultiBodyConfigTpl<T> & mbc);
 

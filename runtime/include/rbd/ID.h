@@ -42,7 +42,7 @@ public:
     }
   }
 
-  /// Checked variant: throws std::invalid_argument on a size mismatch.
+  /// Checked variant: throws std::domain_error on a size mismatch.
   void sInverseDynamics(const MultiBodyTpl<T> & mb, MultiBodyConfigTpl<T> & mbc);
 
   /// Nonlinear effects C (size nrDof): inverse dynamics with alphaD = 0 (Coriolis, centrifugal,
@@ -105,21 +105,6 @@ private:
 };
 
 using InverseDynamics = InverseDynamicsTpl<double>;
-
-/// Throw std::invalid_argument unless motionSubspace has one 6 x dof(i) matrix per joint (used by
-/// the checked dynamics variants: FK fills it, a config of another model would not match).
-template<typename T>
-void checkMatchMotionSubspace(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc)
-{
-  checkMatchBodyVector(mb, mbc.motionSubspace, "motionSubspace");
-  for(int i = 0; i < mb.nrJoints(); ++i)
-  {
-    const auto & S = mbc.motionSubspace[static_cast<std::size_t>(i)];
-    if(S.rows() != 6 || S.cols() != mb.joint(i).dof())
-      throw std::invalid_argument("motionSubspace of joint '" + mb.joint(i).name() + "': " + std::to_string(S.rows()) +
-                                  "x" + std::to_string(S.cols()) + ", expected 6x" + std::to_string(mb.joint(i).dof()));
-  }
-}
 
 extern template class InverseDynamicsTpl<double>;
 extern template class InverseDynamicsTpl<long double>;

@@ -45,7 +45,7 @@ public:
   {
     compute(mb, mbc, mbc.alphaD);
   }
-  /// Checked variant: throws std::invalid_argument on a size mismatch.
+  /// Checked variant: throws std::domain_error on a size mismatch.
   void sInverseDynamicsDerivatives(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc);
 
   /// The same at the accelerations alphaD (per joint) instead of mbc.alphaD.

@@ -99,18 +99,18 @@ public:
     }
   }
 
-  /// Checked variant: throws std::invalid_argument when mb/mbc do not match.
+  /// Checked variant: throws std::domain_error when mb/mbc do not match.
   void sComputeY(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc)
   {
     const auto n = static_cast<std::size_t>(mb.nrBodies());
     if(Y_.rows() != mb.nrDof() || Y_.cols() != 10 * mb.nrBodies())
-      throw std::invalid_argument("IDIM: the MultiBody does not match");
+      throw std::domain_error("IDIM: the MultiBody does not match");
     if(mbc.parentToSon.size() != n || mbc.motionSubspace.size() != n || mbc.bodyVelB.size() != n ||
        mbc.bodyAccB.size() != n)
-      throw std::invalid_argument("IDIM: the MultiBodyConfig does not match the MultiBody");
+      throw std::domain_error("IDIM: the MultiBodyConfig does not match the MultiBody");
     for(int j = 0; j < mb.nrJoints(); ++j)
       if(mbc.motionSubspace[static_cast<std::size_t>(j)].cols() != mb.joint(j).dof())
-        throw std::invalid_argument("IDIM: motionSubspace of joint '" + mb.joint(j).name() +
+        throw std::domain_error("IDIM: motionSubspace of joint '" + mb.joint(j).name() +
                                     "' does not match its dof");
     computeY(mb, mbc);
   }

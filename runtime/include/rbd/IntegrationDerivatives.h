@@ -18,9 +18,9 @@
 //       ∂v⁺/∂[ω v] = [−Exp(ω)ᵀ p^, Exp(ω)ᵀ]                (Dq: the adjoint of Exp(w)⁻¹)
 //       ∂v⁺/∂[δω δv] = [Exp(ω)ᵀ ∂(V(ω) v)/∂ω, Exp(ω)ᵀ V(ω) = Jr(ω)]   (Dw)
 //     ∂(V(ω) v)/∂ω = −a v^ + (a'/θ) (ω × v) ωᵀ + b ((ω·v) 1 + ω vᵀ − 2 v ωᵀ) + (b'/θ) (ω × (ω × v)) ωᵀ.
-//   Planar ([x y] ← [x y] + R2(θ) V2(φ) [v_u v_w], θ ← θ + φ; V2(φ) = [s −c; c s], s = sin φ/φ,
-//     c = (1 − cos φ)/φ): Dq = [1 0; R2(−φ) J V2(φ) v, R2(−φ)], Dw = [1 0; R2(−φ) V2'(φ) v, R2(−φ) V2(φ)],
-//     J = [0 −1; 1 0].
+//   Planar ([x y] ← R2(φ)ᵀ ([x y] + V2(φ) [v_u v_w]), θ ← θ + φ; V2(φ) = [s −c; c s], s = sin φ/φ,
+//     c = (1 − cos φ)/φ; the SE(2) exponential, whatever the coordinates of q): Dq = [1 0;
+//     R2(−φ) J V2(φ) v, R2(−φ)], Dw = [1 0; R2(−φ) V2'(φ) v, R2(−φ) V2(φ)], J = [0 −1; 1 0].
 //   Fixed: no dof.
 // Every coefficient uses its Taylor series for small angles (θ < 0.5), so the derivatives are
 // accurate to a few ulps at and near w = 0 (the usual case: w = alpha dt).
@@ -240,7 +240,7 @@ IntegrationDerivativesTpl<T> integrateConfigurationDerivatives(const MultiBodyTp
 /// d (size nrDof) such that q0 ⊕ d = q1 (integrateConfiguration), the inverse of ⊕: per joint
 /// q1 − q0 (Rev, Prism, Cylindrical), the SO(3) log of quat0⁻¹ quat1 (Spherical; rotation angle
 /// ≤ π), the SE(3) log of (R0, r0)⁻¹ (R1, r1) (Free: [ω; V(ω)⁻¹ R0ᵀ (r1 − r0)]), the SE(2) log
-/// (Planar: [θ1 − θ0; V2(θ1 − θ0)⁻¹ R2(−θ0) (p1 − p0)], θ not wrapped). Quaternions are
+/// (Planar: [φ; V2(φ)⁻¹ (R2(φ) z1 − z0)], φ = θ1 − θ0 not wrapped, z = [x y]). Quaternions are
 /// normalised first. Exact (to rounding) for rotations below π, so that the tests compare
 /// configurations in the tangent space.
 template<typename T>
@@ -269,10 +269,10 @@ Eigen::Matrix<T, Eigen::Dynamic, 1> configurationDifference(const MultiBodyTpl<T
         break;
       case JointType::Planar:
       {
+        // v = V2(φ)^-1 (R2(φ) z1 − z0), φ = θ1 − θ0, z = [x y] (successor axes)
         const T phi = b[0] - a[0];
-        const T ct = cos(a[0]), st = sin(a[0]);
-        const T dx = b[1] - a[1], dy = b[2] - a[2];
-        const T pu = ct * dx + st * dy, pw = -st * dx + ct * dy; // R2(−θ0) (p1 − p0)
+        const T cp = cos(phi), sp = sin(phi);
+        const T pu = cp * b[1] - sp * b[2] - a[1], pw = sp * b[1] + cp * b[2] - a[2];
         const detail::ExpCoefficients<T> c = detail::expCoefficients(phi < T(0) ? -phi : phi);
         const T s = c.s, cc = phi * c.a, det = s * s + cc * cc; // V2 = [s −c; c s]
         out[0] = phi;
@@ -317,14 +317,15 @@ Eigen::Matrix<T, Eigen::Dynamic, 1> configurationDifference(const MultiBodyTpl<T
 }
 
 /// P = d(q ⊕ δ)/dδ at δ = 0, nq × nv (q with unit quaternions): quaternion rows
-/// ½ [−xyzᵀ; w 1 + xyz^], free translation rows R(quat), planar [1 0; 0 R2(θ)], else 1.
+/// ½ [−xyzᵀ; w 1 + xyz^], free translation rows R(quat), planar [1 0; −J z 1] (z = [x y],
+/// J = [0 −1; 1 0]), else 1.
 template<typename T>
 Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic> configurationTangentMap(const MultiBodyTpl<T> & mb,
                                                                          const Eigen::Matrix<T, Eigen::Dynamic, 1> & q);
 
 /// N (nv × nq): the tangent at n(y) of a change dy of y (see the top of this file): quaternion
 /// columns (2/|y|) [−xyz, w 1 − xyz^] with [w xyz] = y/|y|, free translation R(n(y))ᵀ, planar
-/// [1 0; 0 R2(θ)ᵀ], else 1.
+/// [1 0; J z 1], else 1.
 template<typename T>
 Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic> configurationTangentProjection(
     const MultiBodyTpl<T> & mb, const Eigen::Matrix<T, Eigen::Dynamic, 1> & y);
@@ -388,9 +389,10 @@ Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic> configurationTangentMap(const M
         break;
       }
       case JointType::Planar:
+        // z ⊕ δ = z + δv − δθ J z: [1 0; −J z 1], −J z = (y, −x)
         P(qi, vi) = T(1);
-        P(qi + 1, vi + 1) = cos(x[0]), P(qi + 1, vi + 2) = -sin(x[0]);
-        P(qi + 2, vi + 1) = sin(x[0]), P(qi + 2, vi + 2) = cos(x[0]);
+        P(qi + 1, vi) = x[2], P(qi + 2, vi) = -x[1];
+        P(qi + 1, vi + 1) = T(1), P(qi + 2, vi + 2) = T(1);
         break;
       default:
         for(int c = 0; c < mb.joint(i).dof(); ++c) P(qi + c, vi + c) = T(1);
@@ -421,9 +423,10 @@ Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic> configurationTangentProjection(
               Eigen::Quaternion<T>(x[0], x[1], x[2], x[3]).normalized().toRotationMatrix().transpose();
         break;
       case JointType::Planar:
+        // the inverse of [1 0; −J z 1]: [1 0; J z 1], J z = (−y, x)
         N(vi, qi) = T(1);
-        N(vi + 1, qi + 1) = cos(x[0]), N(vi + 1, qi + 2) = sin(x[0]);
-        N(vi + 2, qi + 1) = -sin(x[0]), N(vi + 2, qi + 2) = cos(x[0]);
+        N(vi + 1, qi) = -x[2], N(vi + 2, qi) = x[1];
+        N(vi + 1, qi + 1) = T(1), N(vi + 2, qi + 2) = T(1);
         break;
       default:
         for(int c = 0; c < mb.joint(i).dof(); ++c) N(vi + c, qi + c) = T(1);
@@ -473,15 +476,13 @@ ConfigurationDerivativeJacobiansTpl<T> configurationDerivativeJacobians(const Mu
         break;
       }
       case JointType::Planar:
-      {
-        const T c = cos(x[0]), s = sin(x[0]);
+        // f = [θ̇; v_u + θ̇ y; v_w − θ̇ x]
         J.dalpha(qi, vi) = T(1);
-        J.dalpha(qi + 1, vi + 1) = c, J.dalpha(qi + 1, vi + 2) = -s;
-        J.dalpha(qi + 2, vi + 1) = s, J.dalpha(qi + 2, vi + 2) = c;
-        J.dq(qi + 1, qi) = -s * a[1] - c * a[2];
-        J.dq(qi + 2, qi) = c * a[1] - s * a[2];
+        J.dalpha(qi + 1, vi) = x[2], J.dalpha(qi + 2, vi) = -x[1];
+        J.dalpha(qi + 1, vi + 1) = T(1), J.dalpha(qi + 2, vi + 2) = T(1);
+        J.dq(qi + 1, qi + 2) = a[0];
+        J.dq(qi + 2, qi + 1) = -a[0];
         break;
-      }
       default:
         for(int k = 0; k < mb.joint(i).dof(); ++k) J.dalpha(qi + k, vi + k) = T(1);
     }

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <limits>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -30,6 +31,16 @@ struct JointType
     Cylindrical,
     Free,
     Fixed
+  };
+  /// RBDyn's older axis-named types: Joint(Joint::RevX, forward, name) is a Rev joint about x.
+  enum OldType
+  {
+    RevX,
+    RevY,
+    RevZ,
+    PrismX,
+    PrismY,
+    PrismZ
   };
 };
 
@@ -54,6 +65,13 @@ public:
   : JointTpl(type, sva::Vector3<T>::UnitZ(), forward, std::move(name))
   {
   }
+  /// RevX..PrismZ: a Rev or Prism joint about a unit axis of the frame.
+  JointTpl(OldType type, bool forward, std::string name)
+  : JointTpl(type <= RevZ ? Rev : Prism, sva::Vector3<T>::Unit(static_cast<int>(type) % 3), forward, std::move(name))
+  {
+  }
+  /// A Fixed joint.
+  explicit JointTpl(std::string name) : JointTpl(Fixed, true, std::move(name)) {}
 
   Type type() const { return type_; }
   const std::string & name() const { return name_; }
@@ -64,7 +82,7 @@ public:
   T direction() const { return forward_ ? T(1) : T(-1); }
   /// Unit axis (Rev, Prism, Cylindrical) or plane normal (Planar).
   const sva::Vector3<T> & axis() const { return axis_; }
-  /// In-plane basis of a Planar joint: position = x * planeU + y * planeW.
+  /// In-plane basis of a Planar joint (x along planeU, y along planeW, in the successor's axes).
   const sva::Vector3<T> & planeU() const { return u_; }
   const sva::Vector3<T> & planeW() const { return w_; }
 
@@ -122,6 +140,17 @@ public:
     return q;
   }
   std::vector<T> zeroDof() const { return std::vector<T>(static_cast<std::size_t>(dof_), T(0)); }
+  /// zeroParam() / zeroDof() of a joint of this type.
+  static std::vector<T> ZeroParam(Type type) { return JointTpl(type, true, "").zeroParam(); }
+  static std::vector<T> ZeroDof(Type type) { return JointTpl(type, true, "").zeroDof(); }
+
+  /// Checked variants: throw std::domain_error unless q has params() / alpha has dof() values.
+  sva::PTransform<T> sPose(const std::vector<T> & q) const { return pose(checked(q, params_, "position")); }
+  sva::MotionVec<T> sMotion(const std::vector<T> & alpha) const { return motion(checked(alpha, dof_, "velocity")); }
+  sva::MotionVec<T> sTanAccel(const std::vector<T> & alphaD) const
+  {
+    return tanAccel(checked(alphaD, dof_, "acceleration"));
+  }
 
   template<typename U>
   JointTpl<U> cast() const
@@ -145,6 +174,13 @@ private:
     for(int k = 0; k < dof_; ++k) out += S.col(k) * v[static_cast<std::size_t>(k)];
     return out;
   }
+  const std::vector<T> & checked(const std::vector<T> & v, int size, const char * what) const
+  {
+    if(static_cast<int>(v.size()) != size)
+      throw std::domain_error("joint '" + name_ + "': " + std::to_string(v.size()) + " generalized " + what +
+                              " values, expected " + std::to_string(size));
+    return v;
+  }
   static std::vector<T> negated(std::vector<T> q)
   {
     for(T & x : q) x = -x;
@@ -164,6 +200,13 @@ private:
 
 using Joint = JointTpl<double>;
 
+/// "Joint: name" (RBDyn's format).
+template<typename T>
+std::ostream & operator<<(std::ostream & out, const JointTpl<T> & j)
+{
+  return out << "Joint: " << j.name();
+}
+
 // ---------------------------------------------------------------------------------------------
 
 template<typename T>
@@ -174,7 +217,7 @@ void JointTpl<T>::construct(const sva::Vector3<T> & axis)
   {
     const T n = axis.norm();
     if(!(n > T(0) && n < T(std::numeric_limits<double>::infinity()))) // also false for NaN
-      throw std::invalid_argument("joint '" + name_ + "': axis must be finite and non-zero");
+      throw std::domain_error("joint '" + name_ + "': axis must be finite and non-zero");
     axis_ = axis / n;
   }
   S_ = MotionSubspace::Zero(6, 0);
@@ -252,7 +295,12 @@ sva::PTransform<T> JointTpl<T>::forwardPose(const std::vector<T> & q) const
     case Cylindrical:
       return sva::PTransform<T>(axisE(q[0]), Vec3(axis_ * q[1]));
     case Planar:
-      return sva::PTransform<T>(axisE(q[0]), Vec3(u_ * q[1] + w_ * q[2]));
+    {
+      // RBDyn: PTransform(RotZ(q0), RotZ(q0)^T (q1, q2, 0)): (q1, q2) are the successor's origin in
+      // successor axes, so r = R(n, q0) (q1 u + q2 w) in the predecessor frame
+      const sva::Matrix3<T> E = axisE(q[0]);
+      return sva::PTransform<T>(E, Vec3(E.transpose() * (u_ * q[1] + w_ * q[2])));
+    }
     case Spherical:
       return sva::PTransform<T>(quatE(q.data()));
     case Free:

@@ -91,7 +91,7 @@ public:
   ForceVecT normalMomentumDot(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc, const Vector3 & com,
                               const Vector3 & comDot, const std::vector<MotionVecT> & normalAccB) const;
 
-  // Checked variants: throw std::invalid_argument when mb/mbc do not match.
+  // Checked variants: throw std::domain_error when mb/mbc do not match.
   void sComputeMatrix(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc, const Vector3 & com);
   void sComputeMatrixDot(const MultiBodyTpl<T> & mb, const MultiBodyConfigTpl<T> & mbc, const Vector3 & com,
                          const Vector3 & comDot);
@@ -127,7 +127,7 @@ CentroidalMomentumMatrixTpl<T>::CentroidalMomentumMatrixTpl(const MultiBodyTpl<T
   cmm_(MatrixX::Zero(6, mb.nrDof())), cmmDot_(MatrixX::Zero(6, mb.nrDof()))
 {
   if(static_cast<int>(weight_.size()) != mb.nrBodies())
-    throw std::invalid_argument("CentroidalMomentumMatrix: " + std::to_string(weight_.size()) +
+    throw std::domain_error("CentroidalMomentumMatrix: " + std::to_string(weight_.size()) +
                                 " weights, model has " + std::to_string(mb.nrBodies()) + " bodies");
 }
 

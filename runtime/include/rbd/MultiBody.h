@@ -69,8 +69,51 @@ public:
   const std::map<std::string, int> & bodyIndexByName() const { return bodyIndex_; }
   const std::map<std::string, int> & jointIndexByName() const { return jointIndex_; }
 
-  /// Change the root joint's static transform X_0_j0 (e.g. to place a fixed robot in the world).
+  /// Change joint i's static transform (e.g. the root's X_0_j0 to place a fixed robot in the world).
   void transform(int i, const sva::PTransform<T> & X) { Xt_[static_cast<std::size_t>(i)] = X; }
+  /// Replace every static transform (one per joint).
+  void transforms(std::vector<sva::PTransform<T>> Xt) { Xt_ = std::move(Xt); }
+  /// Replace body i (its name may change: the name index follows).
+  void body(int i, const BodyT & b)
+  {
+    bodies_[static_cast<std::size_t>(i)] = b;
+    indexNames();
+  }
+  /// Replace every body (one per body).
+  void bodies(std::vector<BodyT> b)
+  {
+    bodies_ = std::move(b);
+    indexNames();
+  }
+
+  // Checked accessors (RBDyn's s-prefixed names): an index or name outside the model throws
+  // std::out_of_range; a vector of the wrong size std::domain_error.
+  const BodyT & sBody(int i) const { return bodies_.at(at(i)); }
+  void sBody(int i, const BodyT & b)
+  {
+    bodies_.at(at(i));
+    body(i, b);
+  }
+  void sBodies(std::vector<BodyT> b)
+  {
+    sameSize(b.size(), "bodies");
+    bodies(std::move(b));
+  }
+  const JointT & sJoint(int i) const { return joints_.at(at(i)); }
+  int sPredecessor(int i) const { return pred_.at(at(i)); }
+  int sSuccessor(int i) const { return succ_.at(at(i)); }
+  int sParent(int i) const { return parent_.at(at(i)); }
+  const sva::PTransform<T> & sTransform(int i) const { return Xt_.at(at(i)); }
+  void sTransform(int i, const sva::PTransform<T> & X) { Xt_.at(at(i)) = X; }
+  void sTransforms(std::vector<sva::PTransform<T>> Xt)
+  {
+    sameSize(Xt.size(), "transforms");
+    transforms(std::move(Xt));
+  }
+  int sJointPosInParam(int i) const { return jointPosInParam_.at(at(i)); }
+  int sJointPosInDof(int i) const { return jointPosInDof_.at(at(i)); }
+  int sBodyIndexByName(const std::string & name) const { return bodyIndexByName(name); }
+  int sJointIndexByName(const std::string & name) const { return jointIndexByName(name); }
 
   /// The same model in another scalar type (e.g. long double as an accuracy reference).
   template<typename U>
@@ -95,6 +138,28 @@ private:
     sva::Matrix3<U> E = X.rotation();
     for(int k = 0; k < 3; ++k) E = (U(3) * E - E * E.transpose() * E) / U(2);
     return sva::PTransform<U>(E, X.translation());
+  }
+
+  /// A negative index is out of range too (not converted to a huge size_t silently).
+  static std::size_t at(int i)
+  {
+    if(i < 0) throw std::out_of_range("MultiBody: negative index " + std::to_string(i));
+    return static_cast<std::size_t>(i);
+  }
+  void sameSize(std::size_t n, const char * what) const
+  {
+    if(n != bodies_.size())
+      throw std::domain_error(std::string("MultiBody: ") + what + " has " + std::to_string(n) + " entries, expected " +
+                              std::to_string(bodies_.size()));
+  }
+  /// Rebuild the body name index (names must stay unique).
+  void indexNames()
+  {
+    std::map<std::string, int> index;
+    for(std::size_t i = 0; i < bodies_.size(); ++i)
+      if(!index.emplace(bodies_[i].name(), static_cast<int>(i)).second)
+        throw std::domain_error("MultiBody: duplicate body name '" + bodies_[i].name() + "'");
+    bodyIndex_ = std::move(index);
   }
 
   static int lookup(const std::map<std::string, int> & m, const std::string & name, const char * what)
@@ -127,20 +192,19 @@ MultiBodyTpl<T>::MultiBodyTpl(std::vector<BodyT> bodies,
 {
   const std::size_t n = bodies_.size();
   if(joints_.size() != n || pred_.size() != n || succ_.size() != n || parent_.size() != n || Xt_.size() != n)
-    throw std::invalid_argument("MultiBody: bodies, joints, pred, succ, parent and Xt must have one entry per body");
+    throw std::domain_error("MultiBody: bodies, joints, pred, succ, parent and Xt must have one entry per body");
   for(std::size_t i = 0; i < n; ++i)
   {
     if(parent_[i] >= static_cast<int>(i) || (i > 0 && parent_[i] < 0))
-      throw std::invalid_argument("MultiBody: bodies must be topologically sorted (parent[i] < i)");
+      throw std::domain_error("MultiBody: bodies must be topologically sorted (parent[i] < i)");
     jointPosInParam_.push_back(nrParams_);
     jointPosInDof_.push_back(nrDof_);
     nrParams_ += joints_[i].params();
     nrDof_ += joints_[i].dof();
-    if(!bodyIndex_.emplace(bodies_[i].name(), static_cast<int>(i)).second)
-      throw std::invalid_argument("MultiBody: duplicate body name '" + bodies_[i].name() + "'");
     if(!jointIndex_.emplace(joints_[i].name(), static_cast<int>(i)).second)
-      throw std::invalid_argument("MultiBody: duplicate joint name '" + joints_[i].name() + "'");
+      throw std::domain_error("MultiBody: duplicate joint name '" + joints_[i].name() + "'");
   }
+  indexNames();
 }
 
 extern template class MultiBodyTpl<double>;

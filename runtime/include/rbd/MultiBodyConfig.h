@@ -2,6 +2,8 @@
 // MultiBodyConfig: the state of a MultiBody and the results of the algorithms (plain struct).
 // Per-joint vectors are indexed by joint, per-body vectors by body (joint i moves body i).
 
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <rbd/MultiBody.h>
@@ -82,10 +84,17 @@ void MultiBodyConfigTpl<T>::zero(const MultiBodyTpl<T> & mb)
 }
 
 // --- flat vectors <-> per-joint vectors ------------------------------------------------------
+// The scalar is deduced from the per-joint vectors only, so that an Eigen::VectorXd, a segment or
+// any expression converts to the Eigen::Ref parameter (a Ref<VectorX<T>> cannot deduce T).
+
+template<typename T>
+using FlatVectorRef = Eigen::Ref<Eigen::Matrix<sva::detail::identity_t<T>, Eigen::Dynamic, 1>>;
+template<typename T>
+using ConstFlatVectorRef = Eigen::Ref<const Eigen::Matrix<sva::detail::identity_t<T>, Eigen::Dynamic, 1>>;
 
 /// Concatenate per-joint values (q, or alpha-like) into e (whose size must match).
 template<typename T>
-void paramToVector(const std::vector<std::vector<T>> & v, Eigen::Ref<Eigen::Matrix<T, Eigen::Dynamic, 1>> e)
+void paramToVector(const std::vector<std::vector<T>> & v, FlatVectorRef<T> e)
 {
   Eigen::Index pos = 0;
   for(const auto & joint : v)
@@ -94,11 +103,23 @@ void paramToVector(const std::vector<std::vector<T>> & v, Eigen::Ref<Eigen::Matr
 
 /// Split e into per-joint values, using the sizes already in v.
 template<typename T>
-void vectorToParam(const Eigen::Ref<const Eigen::Matrix<T, Eigen::Dynamic, 1>> & e, std::vector<std::vector<T>> & v)
+void vectorToParam(const ConstFlatVectorRef<T> & e, std::vector<std::vector<T>> & v)
 {
   Eigen::Index pos = 0;
   for(auto & joint : v)
     for(T & x : joint) x = e(pos++);
+}
+
+/// Same as paramToVector / vectorToParam (RBDyn's names for alpha-like values).
+template<typename T>
+void dofToVector(const std::vector<std::vector<T>> & v, FlatVectorRef<T> e)
+{
+  paramToVector<T>(v, e);
+}
+template<typename T>
+void vectorToDof(const ConstFlatVectorRef<T> & e, std::vector<std::vector<T>> & v)
+{
+  vectorToParam<T>(e, v);
 }
 
 /// Flat q vector of a configuration (size mb.nrParams()).
@@ -119,36 +140,95 @@ Eigen::Matrix<T, Eigen::Dynamic, 1> dofToVector(const MultiBodyTpl<T> & mb, cons
   return e;
 }
 
-template<typename T>
-void dofToVector(const std::vector<std::vector<T>> & v, Eigen::Ref<Eigen::Matrix<T, Eigen::Dynamic, 1>> e)
+namespace detail
 {
-  paramToVector<T>(v, e);
-}
-
+/// Per-joint vectors sized by params() (q-like) or dof() (alpha-like).
 template<typename T>
-void vectorToDof(const Eigen::Ref<const Eigen::Matrix<T, Eigen::Dynamic, 1>> & e, std::vector<std::vector<T>> & v)
+std::vector<std::vector<T>> perJoint(const MultiBodyTpl<T> & mb, bool params)
 {
-  vectorToParam<T>(e, v);
+  std::vector<std::vector<T>> v;
+  for(const auto & j : mb.joints()) v.emplace_back(static_cast<std::size_t>(params ? j.params() : j.dof()));
+  return v;
 }
+/// Throw std::out_of_range (RBDyn's type for these conversions) unless have == want.
+inline void checkFlatSize(Eigen::Index have, Eigen::Index want, const char * what)
+{
+  if(have != want)
+    throw std::out_of_range(std::string(what) + " size mismatch: expected " + std::to_string(want) + ", got " +
+                            std::to_string(have));
+}
+template<typename T>
+Eigen::Index totalSize(const std::vector<std::vector<T>> & v)
+{
+  Eigen::Index n = 0;
+  for(const auto & joint : v) n += static_cast<Eigen::Index>(joint.size());
+  return n;
+}
+/// Throw std::out_of_range unless v has one vector per joint of params() (or dof()) values.
+template<typename T>
+void checkPerJoint(const MultiBodyTpl<T> & mb, const std::vector<std::vector<T>> & v, bool params)
+{
+  checkFlatSize(static_cast<Eigen::Index>(v.size()), mb.nrJoints(), "joint vector");
+  for(int i = 0; i < mb.nrJoints(); ++i)
+    checkFlatSize(static_cast<Eigen::Index>(v[static_cast<std::size_t>(i)].size()),
+                  params ? mb.joint(i).params() : mb.joint(i).dof(), params ? "joint parameters" : "joint dof");
+}
+} // namespace detail
 
-/// Per-joint q from a flat vector.
+/// Per-joint q from a flat vector (size mb.nrParams()).
 template<typename T, typename Derived>
 std::vector<std::vector<T>> vectorToParam(const MultiBodyTpl<T> & mb, const Eigen::MatrixBase<Derived> & e)
 {
-  std::vector<std::vector<T>> v;
-  for(const auto & j : mb.joints()) v.emplace_back(static_cast<std::size_t>(j.params()));
-  vectorToParam<T>(Eigen::Matrix<T, Eigen::Dynamic, 1>(e), v);
+  std::vector<std::vector<T>> v = detail::perJoint(mb, true);
+  vectorToParam<T>(e, v);
   return v;
 }
 
-/// Per-joint alpha-like values from a flat vector.
+/// Per-joint alpha-like values from a flat vector (size mb.nrDof()).
 template<typename T, typename Derived>
 std::vector<std::vector<T>> vectorToDof(const MultiBodyTpl<T> & mb, const Eigen::MatrixBase<Derived> & e)
 {
-  std::vector<std::vector<T>> v;
-  for(const auto & j : mb.joints()) v.emplace_back(static_cast<std::size_t>(j.dof()));
-  vectorToParam<T>(Eigen::Matrix<T, Eigen::Dynamic, 1>(e), v);
+  std::vector<std::vector<T>> v = detail::perJoint(mb, false);
+  vectorToParam<T>(e, v);
   return v;
+}
+
+// Checked variants: throw std::out_of_range on a size mismatch (as RBDyn).
+template<typename T>
+void sParamToVector(const std::vector<std::vector<T>> & v, FlatVectorRef<T> e)
+{
+  detail::checkFlatSize(e.size(), detail::totalSize(v), "parameter vector");
+  paramToVector<T>(v, e);
+}
+template<typename T>
+void sVectorToParam(const ConstFlatVectorRef<T> & e, std::vector<std::vector<T>> & v)
+{
+  detail::checkFlatSize(e.size(), detail::totalSize(v), "parameter vector");
+  vectorToParam<T>(e, v);
+}
+template<typename T>
+Eigen::Matrix<T, Eigen::Dynamic, 1> sParamToVector(const MultiBodyTpl<T> & mb, const std::vector<std::vector<T>> & v)
+{
+  detail::checkPerJoint(mb, v, true);
+  return paramToVector(mb, v);
+}
+template<typename T>
+Eigen::Matrix<T, Eigen::Dynamic, 1> sDofToVector(const MultiBodyTpl<T> & mb, const std::vector<std::vector<T>> & v)
+{
+  detail::checkPerJoint(mb, v, false);
+  return dofToVector(mb, v);
+}
+template<typename T, typename Derived>
+std::vector<std::vector<T>> sVectorToParam(const MultiBodyTpl<T> & mb, const Eigen::MatrixBase<Derived> & e)
+{
+  detail::checkFlatSize(e.size(), mb.nrParams(), "parameter vector");
+  return vectorToParam(mb, e);
+}
+template<typename T, typename Derived>
+std::vector<std::vector<T>> sVectorToDof(const MultiBodyTpl<T> & mb, const Eigen::MatrixBase<Derived> & e)
+{
+  detail::checkFlatSize(e.size(), mb.nrDof(), "dof vector");
+  return vectorToDof(mb, e);
 }
 
 extern template struct MultiBodyConfigTpl<double>;

@@ -2,14 +2,18 @@
 // MultiBodyGraph: an undirected graph of bodies linked by joints, from which MultiBody trees are
 // made with any body as the root. Bodies and joints are identified by their names.
 //
-// linkBodies(b1, X_b1_j, b2, X_b2_j, joint): X_b1_j goes from the frame of b1 to the joint frame on
-// b1's side, X_b2_j from the frame of b2 to the joint frame on b2's side. The joint moves b2 w.r.t.
-// b1 when isB1toB2 (its pose maps b1's joint frame into b2's joint frame).
+// linkBodies(b1, X_b1_j, b2, X_b2_j, joint, isB1toB2): X_b1_j goes from the frame of b1 to the joint
+// frame on b1's side, X_b2_j from the frame of b2 to the joint frame on b2's side. The joint moves b2
+// w.r.t. b1 (its pose maps b1's joint frame into b2's joint frame) when isB1toB2 == joint.forward()
+// (RBDyn: a joint added backward, linked b1 -> b2, moves b1 w.r.t. b2).
 //
 // makeMultiBody() puts each body's frame on its parent joint's frame (RBDyn convention): body
-// inertias are moved there, and bodiesBaseTransform() gives the move X_b_j of every body.
+// inertias are moved there, and bodiesBaseTransform() gives, per body, X_j_b: from that new frame
+// back to the body's original frame (RBDyn's X_nb_b: original pose = X_j_b * bodyPosW).
 
+#include <algorithm>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -38,6 +42,22 @@ public:
     PTransformT X_b2_j;
     std::string joint;
     bool isB1toB2;
+  };
+
+  /// One link seen from a body (RBDyn's MultiBodyGraph::Arc): X from the body's frame to the joint
+  /// frame on its side, the joint with the direction it has from this body, the other body's name.
+  struct Arc
+  {
+    PTransformT X;
+    JointT joint;
+    std::string next;
+  };
+  /// A body and its links (RBDyn's MultiBodyGraph::Node). nodeByName returns a copy: the graph
+  /// keeps bodies and links by name, so Arc::next names the other body instead of pointing to it.
+  struct Node
+  {
+    BodyT body;
+    std::vector<Arc> arcs;
   };
 
   void addBody(const BodyT & b);
@@ -69,8 +89,23 @@ public:
 
   /// Make each named joint Fixed, holding it at the given configuration.
   void fixJoints(const std::map<std::string, std::vector<T>> & jointPosByName);
+  /// RBDyn's form: a copy of `other` with the named joints (every joint with fixAllJoints) made
+  /// Fixed at their zero configuration (zeroParam()).
+  static MultiBodyGraphTpl fixJoints(const MultiBodyGraphTpl & other, const std::vector<std::string> & jointsToFix,
+                                     bool fixAllJoints = false)
+  {
+    MultiBodyGraphTpl g = other;
+    std::map<std::string, std::vector<T>> zero;
+    for(const JointT & j : other.joints())
+      if(fixAllJoints || std::find(jointsToFix.begin(), jointsToFix.end(), j.name()) != jointsToFix.end())
+        zero.emplace(j.name(), j.zeroParam());
+    for(const std::string & name : jointsToFix) other.joint(name); // unknown names: std::out_of_range
+    g.fixJoints(zero);
+    return g;
+  }
 
-  /// For every body, X_b_j: from its original frame to its frame in makeMultiBody(rootBodyName...).
+  /// For every body, X_j_b: from its frame in makeMultiBody(rootBodyName, ..., X_b0_j0) back to its
+  /// original frame, so that X_0_b = X_j_b * bodyPosW (RBDyn's result).
   std::map<std::string, PTransformT> bodiesBaseTransform(const std::string & rootBodyName,
                                                          const PTransformT & X_b0_j0 = PTransformT::Identity()) const;
   /// For every body, the names of the joints it supports, seen from rootBodyName.
@@ -85,13 +120,20 @@ public:
   const std::vector<Link> & links() const { return links_; }
   const BodyT & body(const std::string & name) const { return bodies_[bodyPos(name)]; }
   const JointT & joint(const std::string & name) const { return joints_[jointPos(name)]; }
+  /// The body and its links; throws std::out_of_range for an unknown name.
+  std::shared_ptr<const Node> nodeByName(const std::string & name) const;
+  /// The joint as added; throws std::out_of_range for an unknown name.
+  std::shared_ptr<const JointT> jointByName(const std::string & name) const
+  {
+    return std::make_shared<const JointT>(joint(name));
+  }
   bool hasBody(const std::string & name) const;
   bool hasJoint(const std::string & name) const;
   void clear();
 
 private:
   /// An edge seen from one of its bodies.
-  struct Arc
+  struct Side
   {
     std::size_t link;
     PTransformT X_here_j;  ///< from this body's frame to the joint frame on this side
@@ -110,9 +152,11 @@ private:
     bool forward;
   };
 
-  std::vector<Arc> arcs(const std::string & body) const;
+  std::vector<Side> sides(const std::string & body) const;
   std::vector<Visit> walk(const std::string & rootBodyName, const PTransformT & X_b0_j0) const;
   std::size_t bodyPos(const std::string & name) const;
+  /// The link's joint moves b2 w.r.t. b1 (isB1toB2 == the joint's forward()).
+  bool movesB2(const Link & l) const;
   std::size_t jointPos(const std::string & name) const;
   std::vector<std::string> subtreeBeyond(const std::string & rootBodyName, const std::string & jointName,
                                          std::string * rootSideBody) const;

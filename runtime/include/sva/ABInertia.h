@@ -87,6 +87,16 @@ public:
     return ForceVec<T>(I_ * mv.angular() + H_ * mv.linear(), H_.transpose() * mv.angular() + M_ * mv.linear());
   }
 
+  /// I^A M for a 6xN matrix M of motion vectors (columns): [I Mw + H Mv; H^T Mw + M Mv]
+  template<class Derived, class Result>
+  void mul(const Eigen::MatrixBase<Derived> & Mv, const Eigen::MatrixBase<Result> & result) const
+  {
+    detail::columnwise<T>(Mv, result, [&](auto & R) {
+      R.template topRows<3>() = I_ * motionAngular(Mv) + H_ * motionLinear(Mv);
+      R.template bottomRows<3>() = H_.transpose() * motionAngular(Mv) + M_ * motionLinear(Mv);
+    });
+  }
+
   /// I1^A + I2^A = abi(M1 + M2, H1 + H2, I1 + I2)
   ABInertia operator+(const ABInertia & abi) const
   {

@@ -49,3 +49,21 @@ inline Plain toPlain(const Eigen::MatrixBase<Derived> & m)
 } // namespace detail
 
 } // namespace sva
+
+// SpaceVecAlg also declares its 6d aliases in namespace Eigen (code written for it says
+// Eigen::Vector6d). Eigen 3.4 already has Vector3<T> and Matrix3<T>; older versions get ours.
+namespace Eigen
+{
+template<class T>
+using Vector6 = Matrix<T, 6, 1>;
+template<class T>
+using Matrix6 = Matrix<T, 6, 6>;
+using Vector6d = Vector6<double>;
+using Matrix6d = Matrix6<double>;
+#if !EIGEN_VERSION_AT_LEAST(3, 4, 0)
+template<class T>
+using Vector3 = Matrix<T, 3, 1>;
+template<class T>
+using Matrix3 = Matrix<T, 3, 3>;
+#endif
+} // namespace Eigen

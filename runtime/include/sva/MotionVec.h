@@ -3,6 +3,7 @@
 
 #include <ostream>
 
+#include "Columns.h"
 #include "fwd.h"
 
 namespace sva
@@ -118,6 +119,28 @@ public:
   ForceVec<T> crossDual(const ForceVec<T> & fv) const
   {
     return ForceVec<T>(angular_.cross(fv.couple()) + linear_.cross(fv.force()), angular_.cross(fv.force()));
+  }
+
+  /// crm(v) M for a 6xN matrix M of motion vectors (columns): [w x Mw; w x Mv + v x Mw]
+  template<class Derived, class Result>
+  void cross(const Eigen::MatrixBase<Derived> & M, const Eigen::MatrixBase<Result> & result) const
+  {
+    detail::columnwise<T>(M, result, [&](auto & R) {
+      R.template topRows<3>() = detail::crossColumns(angular_, motionAngular(M));
+      R.template bottomRows<3>() =
+          detail::crossColumns(angular_, motionLinear(M)) + detail::crossColumns(linear_, motionAngular(M));
+    });
+  }
+
+  /// crf(v) M for a 6xN matrix M of force vectors (columns): [w x Mn + v x Mf; w x Mf]
+  template<class Derived, class Result>
+  void crossDual(const Eigen::MatrixBase<Derived> & M, const Eigen::MatrixBase<Result> & result) const
+  {
+    detail::columnwise<T>(M, result, [&](auto & R) {
+      R.template topRows<3>() =
+          detail::crossColumns(angular_, forceCouple(M)) + detail::crossColumns(linear_, forceForce(M));
+      R.template bottomRows<3>() = detail::crossColumns(angular_, forceForce(M));
+    });
   }
 
   /// v . f = w . n + v . f

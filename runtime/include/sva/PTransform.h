@@ -125,27 +125,67 @@ public:
   /// X v = [E w; E (v - r x w)]
   MotionVec<T> operator*(const MotionVec<T> & mv) const
   {
-    return MotionVec<T>(E_ * mv.angular(), E_ * (mv.linear() - r_.cross(mv.angular())));
+    return MotionVec<T>(angularMul(mv), linearMul(mv));
+  }
+  /// Angular part of X v: E w
+  vector3_t angularMul(const MotionVec<T> & mv) const
+  {
+    return E_ * mv.angular();
+  }
+  /// Linear part of X v: E (v - r x w)
+  vector3_t linearMul(const MotionVec<T> & mv) const
+  {
+    return E_ * (mv.linear() - r_.cross(mv.angular()));
   }
 
   /// X^-1 v = [E^T w; E^T v + r x E^T w]
   MotionVec<T> invMul(const MotionVec<T> & mv) const
   {
-    const vector3_t Etw = E_.transpose() * mv.angular();
+    const vector3_t Etw = angularInvMul(mv);
     return MotionVec<T>(Etw, E_.transpose() * mv.linear() + r_.cross(Etw));
+  }
+  /// Angular part of X^-1 v: E^T w
+  vector3_t angularInvMul(const MotionVec<T> & mv) const
+  {
+    return E_.transpose() * mv.angular();
+  }
+  /// Linear part of X^-1 v: E^T v + r x E^T w
+  vector3_t linearInvMul(const MotionVec<T> & mv) const
+  {
+    return E_.transpose() * mv.linear() + r_.cross(angularInvMul(mv));
   }
 
   /// X* f = [E (n - r x f); E f]
   ForceVec<T> dualMul(const ForceVec<T> & fv) const
   {
-    return ForceVec<T>(E_ * (fv.couple() - r_.cross(fv.force())), E_ * fv.force());
+    return ForceVec<T>(coupleDualMul(fv), forceDualMul(fv));
+  }
+  /// Couple of X* f: E (n - r x f)
+  vector3_t coupleDualMul(const ForceVec<T> & fv) const
+  {
+    return E_ * (fv.couple() - r_.cross(fv.force()));
+  }
+  /// Force of X* f: E f
+  vector3_t forceDualMul(const ForceVec<T> & fv) const
+  {
+    return E_ * fv.force();
   }
 
   /// X^T f = [E^T n + r x E^T f; E^T f]   (= (X^-1)* f)
   ForceVec<T> transMul(const ForceVec<T> & fv) const
   {
-    const vector3_t Etf = E_.transpose() * fv.force();
+    const vector3_t Etf = forceTransMul(fv);
     return ForceVec<T>(E_.transpose() * fv.couple() + r_.cross(Etf), Etf);
+  }
+  /// Couple of X^T f: E^T n + r x E^T f
+  vector3_t coupleTransMul(const ForceVec<T> & fv) const
+  {
+    return E_.transpose() * fv.couple() + r_.cross(forceTransMul(fv));
+  }
+  /// Force of X^T f: E^T f
+  vector3_t forceTransMul(const ForceVec<T> & fv) const
+  {
+    return E_.transpose() * fv.force();
   }
 
   // --- inertias ------------------------------------------------------------------------------
@@ -265,6 +305,28 @@ public:
     return res;
   }
 
+  /// SpaceVecAlg's output-argument forms of the four products above (result: 6xN, may alias M).
+  template<class Derived, class Result>
+  void mul(const Eigen::MatrixBase<Derived> & M, const Eigen::MatrixBase<Result> & result) const
+  {
+    const_cast<Eigen::MatrixBase<Result> &>(result) = mul(M);
+  }
+  template<class Derived, class Result>
+  void invMul(const Eigen::MatrixBase<Derived> & M, const Eigen::MatrixBase<Result> & result) const
+  {
+    const_cast<Eigen::MatrixBase<Result> &>(result) = invMul(M);
+  }
+  template<class Derived, class Result>
+  void dualMul(const Eigen::MatrixBase<Derived> & M, const Eigen::MatrixBase<Result> & result) const
+  {
+    const_cast<Eigen::MatrixBase<Result> &>(result) = dualMul(M);
+  }
+  template<class Derived, class Result>
+  void transMul(const Eigen::MatrixBase<Derived> & M, const Eigen::MatrixBase<Result> & result) const
+  {
+    const_cast<Eigen::MatrixBase<Result> &>(result) = transMul(M);
+  }
+
   // --- misc ----------------------------------------------------------------------------------
 
   template<class U>
@@ -293,11 +355,7 @@ private:
   template<class Derived>
   static void checkSixRows(const Eigen::MatrixBase<Derived> & M)
   {
-    static_assert(std::is_same<typename Derived::Scalar, T>::value, "sva::PTransform: scalar type mismatch");
-    static_assert(Derived::RowsAtCompileTime == 6 || Derived::RowsAtCompileTime == Eigen::Dynamic,
-                  "sva::PTransform: spatial matrices must have 6 rows");
-    eigen_assert(M.rows() == 6);
-    (void)M;
+    detail::checkSixRows<T>(M);
   }
 
   matrix3_t E_;

@@ -78,6 +78,16 @@ public:
     return ForceVec<T>(I_ * mv.angular() + h_.cross(mv.linear()), m_ * mv.linear() - h_.cross(mv.angular()));
   }
 
+  /// I M for a 6xN matrix M of motion vectors (columns): [I Mw + h x Mv; m Mv - h x Mw]
+  template<class Derived, class Result>
+  void mul(const Eigen::MatrixBase<Derived> & M, const Eigen::MatrixBase<Result> & result) const
+  {
+    detail::columnwise<T>(M, result, [&](auto & R) {
+      R.template topRows<3>() = I_ * motionAngular(M) + detail::crossColumns(h_, motionLinear(M));
+      R.template bottomRows<3>() = m_ * motionLinear(M) - detail::crossColumns(h_, motionAngular(M));
+    });
+  }
+
   /// I1 + I2 = rbi(m1 + m2, h1 + h2, I1 + I2)
   RBInertia operator+(const RBInertia & rbi) const
   {

@@ -6,8 +6,11 @@
 #include "fwd.h"
 
 #include "ABInertia.h"
+#include "AdmittanceVec.h"
 #include "EigenUtility.h"
 #include "ForceVec.h"
+#include "ImpedanceVec.h"
+#include "MathFunc.h"
 #include "MotionVec.h"
 #include "PTransform.h"
 #include "RBInertia.h"

@@ -110,6 +110,10 @@ struct ParserResult
   std::map<std::string, sva::PTransformd> bodyBaseTransforms;
 };
 
+/// ParserResult::bodyBaseTransforms of a tree made from mbg rooted at base: X_b_j per body, the
+/// inverse of what MultiBodyGraph::bodiesBaseTransform returns (X_j_b, RBDyn's convention).
+std::map<std::string, sva::PTransformd> linkToBodyTransforms(const MultiBodyGraph & mbg, const std::string & base);
+
 /// Load a URDF file. Throws UrdfError (the file name in the message is `path` as given).
 ParserResult fromUrdfFile(const std::string & path, const ParserOptions & opt = {});
 /// Load URDF text; sourceName stands for the file name in messages.

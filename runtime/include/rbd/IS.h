@@ -1,0 +1,3 @@
+#pragma once
+// RBDyn's header name for InverseStatics.
+#include <rbd/InverseStatics.h>

@@ -202,6 +202,7 @@ TEST(RbdynApi, ReRootedTreeWithBaseTransformGivesOriginalFramePoses)
   rbd::MultiBodyConfig mbc0(mb0);
   for(int k = 1; k < 4; ++k) mbc0.q[static_cast<std::size_t>(k)] = {q[k - 1]};
   rbd::forwardKinematics(mb0, mbc0);
+  EXPECT_MAT_NEAR(mbc0.bodyPosW[0].matrix(), X_0_j0.matrix(), 1e-15); // the root body's frame: its joint's
   const auto bt0 = g.bodiesBaseTransform("b0", X_b0_j0);
   for(int k = 0; k < 4; ++k)
     EXPECT_MAT_NEAR((bt0.at("b" + std::to_string(k)) * mbc0.bodyPosW[static_cast<std::size_t>(k)]).matrix(),
@@ -213,8 +214,17 @@ TEST(RbdynApi, ReRootedTreeWithBaseTransformGivesOriginalFramePoses)
   const sva::PTransformd X_0_j3 = X_b3_j0 * expected[3]; // X_0_j = X_b_j X_0_b
   const rbd::MultiBody mb3 = g.makeMultiBody("b3", rbd::Joint::Fixed, X_0_j3, X_b3_j0);
   rbd::MultiBodyConfig mbc3(mb3);
-  rbd::ConfigConverter::sConstructor(mb0, mb3).sConvert(mbc0, mbc3);
+  const rbd::ConfigConverter conv = rbd::ConfigConverter::sConstructor(mb0, mb3);
+  conv.sConvert(mbc0, mbc3);
+  // convertJoint for any per-joint type (here the joint names)
+  std::vector<std::string> names0;
+  for(const auto & j : mb0.joints()) names0.push_back(j.name());
+  const std::vector<std::string> names3 = conv.convertJoint(names0);
+  for(int k = 1; k < mb0.nrJoints(); ++k) EXPECT_EQ(names3[static_cast<std::size_t>(mb3.jointIndexByName(names0[static_cast<std::size_t>(k)]))], names0[static_cast<std::size_t>(k)]);
+  std::vector<std::string> shorter(2);
+  EXPECT_THROW(conv.sConvertJoint(names0, shorter), std::domain_error);
   rbd::forwardKinematics(mb3, mbc3);
+  EXPECT_MAT_NEAR(mbc3.bodyPosW[0].matrix(), X_0_j3.matrix(), 1e-15);
   const auto bt3 = g.bodiesBaseTransform("b3", X_b3_j0);
   for(int k = 0; k < 4; ++k)
   {

@@ -75,9 +75,10 @@ JointLines jointLines(const RobotModel & rm)
       case rbd::JointType::Planar:
         L.planar = true;
         L.integrate += fmt::format("  detail::integrate_planar<S>(res.data() + {}, dq.data() + {});\n", qi, vi);
+        // (x, y) in successor axes: d(x, y)/dt = (v_u + thetadot y, v_w - thetadot x)
         L.derivative += fmt::format("  qd[{0}] = alpha[{1}];\n"
-                                    "  qd[{2}] = std::cos(q[{0}]) * alpha[{3}] - std::sin(q[{0}]) * alpha[{4}];\n"
-                                    "  qd[{5}] = std::sin(q[{0}]) * alpha[{3}] + std::cos(q[{0}]) * alpha[{4}];\n",
+                                    "  qd[{2}] = alpha[{3}] + alpha[{1}] * q[{5}];\n"
+                                    "  qd[{5}] = alpha[{4}] - alpha[{1}] * q[{2}];\n",
                                     qi, vi, qi + 1, vi + 1, vi + 2, qi + 2);
         break;
       case rbd::JointType::Spherical:

@@ -9,7 +9,8 @@ import argparse
 import json
 import re
 
-IMPLS = ["single double", "single float", "SIMD double", "SIMD float", "SIMD double 2 threads", "SIMD float 2 threads"]
+IMPLS = ["single double", "single float", "SIMD double", "SIMD float", "SIMD double 1 thread", "SIMD double 2 threads",
+         "SIMD float 1 thread", "SIMD float 2 threads"]
 
 
 def medians(path):
@@ -26,7 +27,7 @@ def medians(path):
             seen_median.add(key)
         elif key in seen_median:
             continue
-        out[key] = (b["states/s"], b["states/s/core"])
+        out[key] = (b["states/s"], b["states/s/core"], int(b["N"]))
     return out, data.get("context", {})
 
 
@@ -57,34 +58,42 @@ def main():
     out = ["# rbdgen batches: SIMD and threads — %s" % meta.get("date", context.get("date", "")), ""]
     out.append("- CPU: **%s** (%s cores, shared with other jobs)" % (meta.get("cpu", "?"), meta.get("cores", context.get("num_cpus", "?"))))
     out.append("- Compiler: %s, `-O3 -march=native` (packs of the native width, below); bench/batch, Google Benchmark, "
-               "%s repetitions (median), wall-clock time." % (meta.get("gcc", "g++"), meta.get("repetitions", "?")))
-    out.append("- Each iteration evaluates N states (8192; 2048 for nv > 20) of a pool of 4N seeded random states "
-               "(unit quaternions, joints and velocities in [-3, 3], third input in [-2, 2]), starting N/4 states "
-               "further each time, into an N-state row-major output kept live (`benchmark::DoNotOptimize`). "
-               "`single`: a loop of single-state calls (the loop a user writes); `SIMD`: one call of the batch API "
-               "(`NS::batch::...`, threads = 1); `2 threads`: threads = 2 (per core: the rate / 2).")
+               "%s repetitions (median)." % (meta.get("gcc", "g++"), meta.get("repetitions", "?")))
+    out.append("- Each iteration evaluates N states of a pool of 32768 seeded random states (unit quaternions, joints "
+               "and velocities in [-3, 3], third input in [-2, 2]), starting N/4 states further each time, into an "
+               "N-state row-major output kept live (`benchmark::DoNotOptimize`). `single`: a loop of single-state "
+               "calls (the loop a user writes); `SIMD`: one call of the batch API (`NS::batch::...`).")
+    out.append("- Per core, in cache: N such that a call's inputs and outputs fit in 512 KB (N in the table), "
+               "CPU time: the speed of the code, not of the memory. Threads: N = 8192 (2048 for nv > 20), "
+               "wall-clock time, 1 and 2 threads (the cores are shared with other jobs: the scaling is a lower "
+               "bound).")
     for r in robots_info:
         out.append("- " + r)
     out.append("")
-    out.append("## States per second per core")
+    out.append("## States per second per core (in cache)")
     out.append("")
-    out.append("| robot | algorithm | single double | single float | SIMD double | SIMD float | SIMD double, 2 threads (per core) | SIMD float, 2 threads (per core) |")
-    out.append("|---|---|--:|--:|--:|--:|--:|--:|")
+    out.append("| robot | algorithm | N | single double | single float | SIMD double | SIMD float |")
+    out.append("|---|---|--:|--:|--:|--:|--:|")
     algos = list(dict.fromkeys(k[1] for k in cells))
-    for robot in robots:
-        for algo in algos:
-            c = {impl: cells.get((robot, algo, impl)) for impl in IMPLS}
-            if any(v is None for v in c.values()):
-                continue
-            sd, sf = c["single double"][1], c["single float"][1]
-            vd, vf = c["SIMD double"][1], c["SIMD float"][1]
-            td, tf = c["SIMD double 2 threads"], c["SIMD float 2 threads"]
-            out.append("| %s | %s | %s | %s | %s (%.1f×) | %s (%.1f×) | %s (%s, %.2f× 1 thread) | %s (%s, %.2f× 1 thread) |" % (
-                robot, algo, fmt(sd), fmt(sf), fmt(vd), vd / sd, fmt(vf), vf / sf,
-                fmt(td[0]), fmt(td[1]), td[0] / vd, fmt(tf[0]), fmt(tf[1]), tf[0] / vf))
+    rows = [(robot, algo, {impl: cells.get((robot, algo, impl)) for impl in IMPLS}) for robot in robots for algo in algos]
+    rows = [r for r in rows if all(v is not None for v in r[2].values())]
+    for robot, algo, c in rows:
+        sd, sf, vd, vf = (c[i][1] for i in IMPLS[:4])
+        out.append("| %s | %s | %d | %s | %s | %s (%.1f×) | %s (%.1f×) |" % (
+            robot, algo, c["SIMD double"][2], fmt(sd), fmt(sf), fmt(vd), vd / sd, fmt(vf), vf / sf))
     out.append("")
-    out.append("(SIMD ratios: against the single-state loop of the same scalar; 2 threads: total rate, per-core rate, "
-               "and the total against one thread.)")
+    out.append("(×: the SIMD batch against the single-state loop of the same scalar.)")
+    out.append("")
+    out.append("## Threads (many states per call)")
+    out.append("")
+    out.append("| robot | algorithm | N | SIMD double, 1 thread | 2 threads (per core) | scaling | SIMD float, 1 thread | 2 threads (per core) | scaling |")
+    out.append("|---|---|--:|--:|--:|--:|--:|--:|--:|")
+    for robot, algo, c in rows:
+        d1, d2, f1, f2 = (c[i] for i in IMPLS[4:])
+        out.append("| %s | %s | %d | %s | %s (%s) | %.2f× | %s | %s (%s) | %.2f× |" % (
+            robot, algo, d1[2], fmt(d1[0]), fmt(d2[0]), fmt(d2[1]), d2[0] / d1[0], fmt(f1[0]), fmt(f2[0]), fmt(f2[1]),
+            f2[0] / f1[0]))
+    out.append("")
     if checks:
         out.append("")
         out.append("## Agreement (checked at start-up, 256 states)")

@@ -6,7 +6,8 @@
 // N-state output kept live. In cache: N such that the inputs and outputs of a call fit in 512 KB
 // (256 to 8192 states), the speed of the code rather than of the memory; CPU time of the process.
 // Threads: N = 8192 (2048 for nv > 20), so that starting a thread costs little, wall-clock time (the
-// threads' work included). Counters: states/s, and states/s per core (the rate / the threads).
+// threads' work included). Counters: states/s, states/s per core (the rate / the threads), states per
+// CPU second of the process (all threads: what a second thread adds to the work, whatever the load).
 // At start-up, a check line per algorithm: the largest difference of the SIMD double batch from the
 // single-state double code, and of the SIMD float batch from it.
 #include "BatchBench.h"
@@ -14,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <memory>
 #include <random>
 #include <string>
@@ -81,6 +83,14 @@ std::shared_ptr<const Pools> makePools(const BatchRobotInfo & r, std::size_t sta
   return p;
 }
 
+/// CPU time of the whole process (every thread), seconds.
+double processCpuSeconds()
+{
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 /// max over states of max |x - ref| / max(1, max |ref|).
 template<class T>
 double worstRelative(const std::vector<T> & x, const std::vector<double> & ref, std::size_t N, int n)
@@ -114,6 +124,7 @@ void registerCell(const BatchRobotInfo & r, const BatchAlgorithm<T> & a, const s
     }();
     std::vector<T> out(N * static_cast<std::size_t>(a.outputSize));
     std::size_t first = 0;
+    const double cpu0 = processCpuSeconds();
     for(auto _ : st)
     {
       const Inputs<T> in = pool.at(r, first);
@@ -127,6 +138,8 @@ void registerCell(const BatchRobotInfo & r, const BatchAlgorithm<T> & a, const s
     st.counters["states/s"] = benchmark::Counter(states, benchmark::Counter::kIsRate);
     st.counters["states/s/core"] = benchmark::Counter(states / std::max(threads, 1), benchmark::Counter::kIsRate);
     st.counters["N"] = static_cast<double>(N);
+    // the CPU time of every thread of the process: with 2 threads, the work the threads add
+    st.counters["states/cpu-s"] = states / (processCpuSeconds() - cpu0);
   });
   b->Unit(benchmark::kMicrosecond);
   if(wall) b->UseRealTime();

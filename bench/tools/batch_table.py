@@ -27,7 +27,7 @@ def medians(path):
             seen_median.add(key)
         elif key in seen_median:
             continue
-        out[key] = (b["states/s"], b["states/s/core"], int(b["N"]))
+        out[key] = (b["states/s"], b["states/s/core"], int(b["N"]), b["states/cpu-s"])
     return out, data.get("context", {})
 
 
@@ -86,13 +86,18 @@ def main():
     out.append("")
     out.append("## Threads (many states per call)")
     out.append("")
-    out.append("| robot | algorithm | N | SIMD double, 1 thread | 2 threads (per core) | scaling | SIMD float, 1 thread | 2 threads (per core) | scaling |")
-    out.append("|---|---|--:|--:|--:|--:|--:|--:|--:|")
+    out.append("| robot | algorithm | N | SIMD double, 1 thread | 2 threads (per core) | scaling | CPU efficiency | "
+               "SIMD float, 1 thread | 2 threads (per core) | scaling | CPU efficiency |")
+    out.append("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|")
     for robot, algo, c in rows:
         d1, d2, f1, f2 = (c[i] for i in IMPLS[4:])
-        out.append("| %s | %s | %d | %s | %s (%s) | %.2f× | %s | %s (%s) | %.2f× |" % (
-            robot, algo, d1[2], fmt(d1[0]), fmt(d2[0]), fmt(d2[1]), d2[0] / d1[0], fmt(f1[0]), fmt(f2[0]), fmt(f2[1]),
-            f2[0] / f1[0]))
+        out.append("| %s | %s | %d | %s | %s (%s) | %.2f× | %.2f | %s | %s (%s) | %.2f× | %.2f |" % (
+            robot, algo, d1[2], fmt(d1[0]), fmt(d2[0]), fmt(d2[1]), d2[0] / d1[0], d2[3] / d1[3], fmt(f1[0]), fmt(f2[0]),
+            fmt(f2[1]), f2[0] / f1[0], f2[3] / f1[3]))
+    out.append("")
+    out.append("(scaling: wall-clock rate with 2 threads / 1 thread; CPU efficiency: states per CPU second of the "
+               "process (all threads) with 2 threads / with 1 thread, 1.00 when the second thread adds no work: then "
+               "2 free cores give 2×.)")
     out.append("")
     if checks:
         out.append("")

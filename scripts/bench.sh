@@ -11,7 +11,8 @@
 # implementations; the clang++ build: the generated code only), the cost model (bench_costs),
 # callgrind instruction counts, the compile time of talos_reduced's header and of every robot's header at g++ -O2
 # (bench/tools/header_costs.sh: lines, seconds, peak MB -> bench/results/latest-headers.md), then writes
-#   bench/results/<date>-<cpu>.md, .csv, bench/results/latest.md (and prints the table).
+#   bench/results/<date>-<cpu>.md, .csv, bench/results/latest.md (and prints the table), and the
+#   batch table of bench_batch (SIMD and threads): <date>-<cpu>-batch.md, latest-batch.md.
 # Exit status: non-zero if a build fails or an implementation disagrees with the runtime.
 # --quick: one repetition, short runs, no callgrind, no compile time (a smoke run).
 # --pinocchio DIR: Pinocchio's source tree (e.g. v3.7.0; header-only, see bench/CMakeLists.txt) as one
@@ -89,6 +90,11 @@ echo "== scene effects (gcc)" >&2
 "${dir[gcc]}/bench/bench_scene_effects" --benchmark_repetitions=$repetitions --benchmark_report_aggregates_only=true \
   --benchmark_min_time=$min_time > "$raw/scene_effects.txt" || status=1
 
+# Batches (bench_batch: single-state loop vs SIMD vs SIMD + 2 threads, states per second): its own table.
+echo "== batches (gcc)" >&2
+"${dir[gcc]}/bench/bench_batch" --benchmark_repetitions=$repetitions --benchmark_report_aggregates_only=true \
+  --benchmark_min_time=$min_time --benchmark_out="$raw/batch.json" --benchmark_out_format=json > "$raw/batch.txt" || status=1
+
 if [ $callgrind = 1 ]; then
   echo "robot,algo,instructions" > "$raw/callgrind.csv"
   for entry in "${entries[@]}"; do
@@ -164,6 +170,9 @@ python3 "$repo/bench/tools/merge_results.py" --raw "$raw" --md "$results/$date_i
   "${pin_md[@]}"
 cp "$results/$date_iso-$slug.md" "$results/latest.md"
 [ -n "$pinocchio" ] && cp "$results/$date_iso-$slug-pinocchio.md" "$results/latest-pinocchio.md"
+python3 "$repo/bench/tools/batch_table.py" --json "$raw/batch.json" --text "$raw/batch.txt" --meta "$raw/meta.txt" \
+  --md "$results/$date_iso-$slug-batch.md"
+cp "$results/$date_iso-$slug-batch.md" "$results/latest-batch.md"
 cp "$raw/scene_effects.txt" "$results/$date_iso-$slug-scene-effects.txt"
 cp "$raw/scene_effects.txt" "$results/latest-scene-effects.txt"
 echo "bench.sh: wrote $results/$date_iso-$slug.md (+ .csv, latest.md)" >&2

@@ -2,7 +2,7 @@
 # Install the Debian packages rbdgen needs, only those missing. Works as root, or as a user with sudo.
 set -euo pipefail
 
-packages=(g++ cmake ninja-build pkg-config libeigen3-dev liburdfdom-dev libtinyxml2-dev libfmt-dev libcli11-dev
+packages=(g++ cmake ninja-build pkg-config libeigen3-dev libxsimd-dev liburdfdom-dev libtinyxml2-dev libfmt-dev libcli11-dev
           libgtest-dev libgmock-dev libbenchmark-dev gnuplot-nox
           pybind11-dev python3-dev python3-numpy python3-pytest)
 packages+=("$@")

@@ -1,15 +1,21 @@
 // The cells of bench_batch (see BatchBench.h): for each robot and algorithm,
-//   single double | single float | SIMD double | SIMD float | SIMD double 2 threads | SIMD float 2 threads
-// each iteration evaluates N states of a pool of 4N seeded random states, starting N/4 states further
-// than the previous iteration (the inputs differ from one iteration to the next), into an N-state
-// output kept live. Wall-clock time (the threads' work included); counters: states/s and states/s
-// per core (threads = cores used). At start-up, a check line per algorithm: the largest difference
-// of the SIMD double batch from the single-state double code, and of the SIMD float batch from it.
+//   single double | single float | SIMD double | SIMD float           N states in cache, CPU time
+//   SIMD double, 1 thread | 2 threads | SIMD float, 1 thread | 2 threads   many states, wall-clock time
+// Each iteration evaluates N states of a pool of 4 x 8192 seeded random states, starting N/4 states
+// further than the previous iteration (the inputs differ from one iteration to the next), into an
+// N-state output kept live. In cache: N such that the inputs and outputs of a call fit in 512 KB
+// (256 to 8192 states), the speed of the code rather than of the memory; CPU time of the process.
+// Threads: N = 8192 (2048 for nv > 20), so that starting a thread costs little, wall-clock time (the
+// threads' work included). Counters: states/s, states/s per core (the rate / the threads), states per
+// CPU second of the process (all threads: what a second thread adds to the work, whatever the load).
+// At start-up, a check line per algorithm: the largest difference of the SIMD double batch from the
+// single-state double code, and of the SIMD float batch from it.
 #include "BatchBench.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <memory>
 #include <random>
 #include <string>
@@ -23,10 +29,20 @@ namespace rbdbench
 namespace
 {
 
-/// States per call: enough that starting the threads of a call costs little (a few per cent).
-std::size_t batchSize(const BatchRobotInfo & r)
+/// States per call of the threads' cells: enough that starting the threads of a call costs little.
+std::size_t manyStates(const BatchRobotInfo & r)
 {
   return r.nv <= 20 ? 8192 : 2048;
+}
+
+/// States per call of the in-cache cells: inputs and outputs (double) in 512 KB, a power of 2 in
+/// [256, 8192].
+std::size_t cachedStates(const BatchRobotInfo & r, int outputSize)
+{
+  const std::size_t bytes = sizeof(double) * static_cast<std::size_t>(r.nq + 2 * r.nv + outputSize);
+  std::size_t n = 256;
+  while(2 * n * bytes <= (512u << 10) && 2 * n <= 8192) n *= 2;
+  return n;
 }
 
 /// The pool: 4N seeded random states (unit quaternion for a free base, joints and velocities in
@@ -67,6 +83,14 @@ std::shared_ptr<const Pools> makePools(const BatchRobotInfo & r, std::size_t sta
   return p;
 }
 
+/// CPU time of the whole process (every thread), seconds.
+double processCpuSeconds()
+{
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 /// max over states of max |x - ref| / max(1, max |ref|).
 template<class T>
 double worstRelative(const std::vector<T> & x, const std::vector<double> & ref, std::size_t N, int n)
@@ -86,20 +110,21 @@ double worstRelative(const std::vector<T> & x, const std::vector<double> & ref, 
   return worst;
 }
 
-/// One cell: `threads` = 0 for the single-state loop.
+/// One cell of N states per call: `threads` = 0 for the single-state loop; wall-clock time when
+/// `wall` (else CPU time).
 template<class T>
 void registerCell(const BatchRobotInfo & r, const BatchAlgorithm<T> & a, const std::shared_ptr<const Pools> & pools,
-                  const std::string & impl, int threads)
+                  const std::string & impl, int threads, std::size_t N, bool wall)
 {
-  const std::size_t N = batchSize(r);
   const std::string name = std::string(r.name) + "/" + a.name + "/" + impl;
-  benchmark::RegisterBenchmark(name.c_str(), [r, a, pools, N, threads](benchmark::State & st) {
+  benchmark::internal::Benchmark * b = benchmark::RegisterBenchmark(name.c_str(), [r, a, pools, N, threads](benchmark::State & st) {
     const Pool<T> & pool = [&]() -> const Pool<T> & {
       if constexpr(std::is_same_v<T, double>) return pools->d;
       else return pools->f;
     }();
     std::vector<T> out(N * static_cast<std::size_t>(a.outputSize));
     std::size_t first = 0;
+    const double cpu0 = processCpuSeconds();
     for(auto _ : st)
     {
       const Inputs<T> in = pool.at(r, first);
@@ -112,7 +137,12 @@ void registerCell(const BatchRobotInfo & r, const BatchAlgorithm<T> & a, const s
     const double states = static_cast<double>(N) * static_cast<double>(st.iterations());
     st.counters["states/s"] = benchmark::Counter(states, benchmark::Counter::kIsRate);
     st.counters["states/s/core"] = benchmark::Counter(states / std::max(threads, 1), benchmark::Counter::kIsRate);
-  })->UseRealTime()->Unit(benchmark::kMicrosecond);
+    st.counters["N"] = static_cast<double>(N);
+    // the CPU time of every thread of the process: with 2 threads, the work the threads add
+    st.counters["states/cpu-s"] = states / (processCpuSeconds() - cpu0);
+  });
+  b->Unit(benchmark::kMicrosecond);
+  if(wall) b->UseRealTime();
 }
 
 /// The check line of one algorithm (printed before the cells run).
@@ -133,18 +163,22 @@ void check(const BatchRobotInfo & r, const BatchAlgorithm<double> & d, const Bat
 
 int registerBatchRobot(const BatchRobotInfo & robot, std::vector<BatchAlgorithm<double>> d, std::vector<BatchAlgorithm<float>> f)
 {
-  const auto pools = makePools(robot, 4 * batchSize(robot));
-  std::printf("robot %s: nq %d, nv %d, %zu states per call, packs of %zu doubles / %zu floats\n", robot.name, robot.nq, robot.nv,
-              batchSize(robot), robot.widthDouble, robot.widthFloat);
+  const std::size_t many = manyStates(robot);
+  const auto pools = makePools(robot, 4 * 8192);
+  std::printf("robot %s: nq %d, nv %d, packs of %zu doubles / %zu floats; threads' cells: %zu states per call\n", robot.name,
+              robot.nq, robot.nv, robot.widthDouble, robot.widthFloat, many);
   for(std::size_t k = 0; k < d.size(); ++k)
   {
     check(robot, d[k], f[k], *pools);
-    registerCell(robot, d[k], pools, "single double", 0);
-    registerCell(robot, f[k], pools, "single float", 0);
-    registerCell(robot, d[k], pools, "SIMD double", 1);
-    registerCell(robot, f[k], pools, "SIMD float", 1);
-    registerCell(robot, d[k], pools, "SIMD double 2 threads", 2);
-    registerCell(robot, f[k], pools, "SIMD float 2 threads", 2);
+    const std::size_t cached = cachedStates(robot, d[k].outputSize);
+    registerCell(robot, d[k], pools, "single double", 0, cached, false);
+    registerCell(robot, f[k], pools, "single float", 0, cached, false);
+    registerCell(robot, d[k], pools, "SIMD double", 1, cached, false);
+    registerCell(robot, f[k], pools, "SIMD float", 1, cached, false);
+    registerCell(robot, d[k], pools, "SIMD double 1 thread", 1, many, true);
+    registerCell(robot, d[k], pools, "SIMD double 2 threads", 2, many, true);
+    registerCell(robot, f[k], pools, "SIMD float 1 thread", 1, many, true);
+    registerCell(robot, f[k], pools, "SIMD float 2 threads", 2, many, true);
   }
   return 0;
 }

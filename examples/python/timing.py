@@ -7,8 +7,9 @@
    forward_dynamics, forward_dynamics_derivatives; best of repeated timeit runs) minus the same
    forward_dynamics call in C++;
 2. batched forward dynamics, N states in one call (threads = 1 and 2), in states per second, against
-   the same generated function called in a C++ loop over the same row-major layout (fd_loop.cpp,
-   compiled here with the flags of rbdgen.compile), one thread.
+   the same generated code in C++ over the same row-major layout (fd_loop.cpp, compiled here with the
+   flags of rbdgen.compile), one thread: one call of the batch API NS/batch.hpp (SIMD packs: what a
+   batched Python call runs), and a loop of single-state calls.
 Times are CPU times of the calling thread (time.thread_time, CLOCK_THREAD_CPUTIME_ID in C++; with
 threads = 1 the batch runs on the calling thread), the best of several runs, the Python and C++ runs
 interleaved: on a machine shared with other jobs, wall-clock times also count the time the process
@@ -36,22 +37,25 @@ def best_time(fn, number, repeat=7):
 
 
 def build_cxx_loop(robot, tmp):
-    """fd_loop.cpp on this robot's generated header, compiled with rbdgen.compile's flags."""
+    """fd_loop.cpp on this robot's generated headers, compiled with rbdgen.compile's flags."""
     module = _compile.module_of(robot)
     name = module.__name__
-    header = Path(module.__file__).parent / name / "dynamics.hpp"
+    header = Path(module.__file__).parent / name / "batch.hpp"
     exe = Path(tmp) / "fd_loop"
     flags = [f for f in _compile.CXXFLAGS if f not in ("-shared", "-fPIC", "-fvisibility=hidden")]
     cmd = [_compile._compiler(), *flags, "-I" + _compile._config.EIGEN_INCLUDE.split(";")[0],
-           '-DROBOT_HEADER="%s"' % header, "-DROBOT_NS=" + name, str(HERE / "fd_loop.cpp"), "-o", str(exe)]
+           "-I" + _compile._config.XSIMD_INCLUDE, '-DROBOT_HEADER="%s"' % header, "-DROBOT_NS=" + name,
+           str(HERE / "fd_loop.cpp"), "-o", str(exe), "-pthread"]
     subprocess.run(cmd, check=True)
     return exe
 
 
 def cxx_loop(exe, n, runs=5):
-    """(states/s, ns per call) of the best of `runs` loops over n states."""
-    rate, ns, _ = subprocess.run([str(exe), str(n), str(runs)], check=True, capture_output=True, text=True).stdout.split()
-    return float(rate), float(ns)
+    """(states/s, ns per call) of the best of `runs` loops of single-state calls over n states, and
+    the states/s of the best batch call."""
+    rate, ns, batch, _ = subprocess.run([str(exe), str(n), str(runs)], check=True, capture_output=True,
+                                        text=True).stdout.split()
+    return float(rate), float(ns), float(batch)
 
 
 def main():
@@ -70,7 +74,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         exe = build_cxx_loop(robot, tmp)
         py = {1: 0.0, 2: 0.0}  # best states/s per thread count
-        cxx, cxx_ns = 0.0, float("inf")
+        cxx, cxx_ns, cxx_batch = 0.0, float("inf"), 0.0
         single = {"center_of_mass": float("inf"), "forward_dynamics": float("inf"),
                   "forward_dynamics_derivatives": float("inf")}
         calls = {"center_of_mass": lambda: robot.center_of_mass(q1),
@@ -83,8 +87,8 @@ def main():
                     t0 = clock()
                     robot.forward_dynamics(q, v, tau, threads=threads)
                     py[threads] = max(py[threads], n / (clock() - t0))
-            rate, ns = cxx_loop(exe, n)
-            cxx, cxx_ns = max(cxx, rate), min(cxx_ns, ns)
+            rate, ns, batch = cxx_loop(exe, n)
+            cxx, cxx_ns, cxx_batch = max(cxx, rate), min(cxx_ns, ns), max(cxx_batch, batch)
             for name, call in calls.items():
                 single[name] = min(single[name], 1e9 * best_time(call, 20000, repeat=3))
 
@@ -92,10 +96,12 @@ def main():
     print("single state from Python: " + ", ".join("%s %.0f ns" % kv for kv in single.items()) + " per call")
     print("forward_dynamics in a C++ loop: %.0f ns per call -> Python per-call overhead %.0f ns"
           % (cxx_ns, single["forward_dynamics"] - cxx_ns))
+    print("forward_dynamics over N = %d states in C++, one thread: %.3g states/s by the batch API (SIMD), "
+          "%.3g states/s by a loop of single-state calls" % (n, cxx_batch, cxx))
     for threads, rate in py.items():
         print("batched forward_dynamics from Python, N = %d, threads = %d: %.3g states/s (%s; %.1f%% of the C++ "
-              "loop's %.3g states/s on one thread)"
-              % (n, threads, rate, "CPU time" if threads == 1 else "wall clock", 100 * rate / cxx, cxx))
+              "batch call on one thread, %.2fx the C++ loop)"
+              % (n, threads, rate, "CPU time" if threads == 1 else "wall clock", 100 * rate / cxx_batch, rate / cxx))
 
 
 if __name__ == "__main__":

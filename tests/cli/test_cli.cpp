@@ -269,6 +269,36 @@ TEST_F(CliTest, UnchangedHeaderKeepsItsMtime)
   EXPECT_EQ(listTree(dir() / "out"), (std::vector<std::string>{"pendulum", "pendulum/dynamics.hpp"}));
 }
 
+TEST_F(CliTest, BatchWritesBatchHeaderBesideTheHeader)
+{
+  // --batch adds NS/batch.hpp and leaves dynamics.hpp as without it.
+  ASSERT_EQ(rbdgen({"generate", robot("ur5e").string(), "--out", "plain"}, dir()).code, 0);
+  const Result r = rbdgen({"generate", robot("ur5e").string(), "--out", "batch", "--batch"}, dir());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(listTree(dir() / "batch"), (std::vector<std::string>{"ur5e", "ur5e/batch.hpp", "ur5e/dynamics.hpp"}));
+  EXPECT_NE(r.out.find("ur5e/batch.hpp"), std::string::npos);
+  EXPECT_TRUE(readFile(dir() / "batch" / "ur5e" / "dynamics.hpp") == readFile(dir() / "plain" / "ur5e" / "dynamics.hpp"));
+  const std::string batch = readFile(dir() / "batch" / "ur5e" / "batch.hpp");
+  EXPECT_NE(batch.find("#include \"dynamics.hpp\""), std::string::npos);
+  EXPECT_NE(batch.find("namespace ur5e"), std::string::npos);
+  EXPECT_NE(batch.find("// Options: fixed base, batch"), std::string::npos);
+  EXPECT_NE(batch.find("void forward_dynamics("), std::string::npos);
+  EXPECT_EQ(batch.find("forward_dynamics_derivatives("), std::string::npos); // only with --derivatives
+  // Deterministic: again, elsewhere, the same bytes; with --derivatives, their batch functions too.
+  ASSERT_EQ(rbdgen({"generate", robot("ur5e").string(), "--out", "again", "--batch"}, dir()).code, 0);
+  EXPECT_TRUE(readFile(dir() / "again" / "ur5e" / "batch.hpp") == batch);
+  ASSERT_EQ(rbdgen({"generate", robot("ur5e").string(), "--out", "deriv", "--batch", "--derivatives"}, dir()).code, 0);
+  EXPECT_NE(readFile(dir() / "deriv" / "ur5e" / "batch.hpp").find("void forward_dynamics_derivatives("), std::string::npos);
+  // A scene has no batch API: one line, nothing written.
+  const Result scene = rbdgen({"generate", "--scene", (fs::path(RBDGEN_SOURCE_DIR) / "scenes" / "pendulum_damped.xml").string(),
+                               "--out", "scene", "--batch"},
+                              dir());
+  EXPECT_EQ(scene.code, 1);
+  EXPECT_NE(scene.err.find("--batch takes a URDF"), std::string::npos) << scene.err;
+  EXPECT_EQ(std::count(scene.err.begin(), scene.err.end(), '\n'), 1);
+  EXPECT_FALSE(fs::exists(dir() / "scene"));
+}
+
 // ---------------------------------------------------------------------------------------------
 // info
 

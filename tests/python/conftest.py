@@ -29,6 +29,24 @@ def rel_err(x, ref):
     return float(np.max(np.abs(np.asarray(x) - ref)) / max(1.0, float(np.max(np.abs(ref)))))
 
 
+# A robot of rbdgen.compile evaluates a batch on SIMD packs (NS/batch.hpp), a single state with the
+# single-state function: each lane does the same operations, bitwise equal when the compiler does not
+# fuse a*b + c; with FMA (the modules' -march=native on a CPU with FMA) it fuses them differently in
+# the two, and they agree within SIMD_BOUND relative, grown by cond(H) for forward dynamics (README,
+# "Batches: SIMD and threads"; tests/batch/test_batch.cpp).
+SIMD_BOUND = 1e-13
+
+
+def simd_growth(robot, q):
+    """max(1, cond(H) / 1e3) for one state q: how forward dynamics' rounding differences grow."""
+    return max(1.0, float(np.linalg.cond(robot.mass_matrix(q))) / 1e3)
+
+
+def assert_simd_close(batch_item, single, grow=1.0):
+    """One state of a compiled robot's batch against its single-state call (SIMD_BOUND)."""
+    assert rel_err(batch_item, single) <= SIMD_BOUND * grow, (rel_err(batch_item, single), grow)
+
+
 @pytest.fixture(scope="session")
 def robots():
     return ROBOTS

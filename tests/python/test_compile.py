@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import rbdgen
-from conftest import ROBOTS, ROOT, SCENES, random_states, rel_err
+from conftest import ROBOTS, ROOT, SCENES, assert_simd_close, random_states, rel_err, simd_growth
 
 BOUND = 1e-12  # max |generated - runtime| / max(1, max |runtime|), as tests/generator/test_generated
 
@@ -94,14 +94,19 @@ def test_generated_derivatives_equal_runtime(pair):
     for name, x, y, bound in zip(names, compiled.forward_dynamics_derivatives(q, v, a),
                                  runtime.forward_dynamics_derivatives(q, v, a), [1e-12, 1e-10, 1e-10, 1e-12]):
         assert rel_err(x, y) < bound, name
-    # batch = single calls, any thread count
+    # batch (SIMD packs) = single calls, any thread count
     fds = compiled.forward_dynamics_derivatives(q, v, a, threads=3)
     ids = compiled.inverse_dynamics_derivatives(q, v, a, threads=2)
+    for x, y in zip(fds, compiled.forward_dynamics_derivatives(q, v, a)):
+        np.testing.assert_array_equal(x, y)
+    for x, y in zip(ids, compiled.inverse_dynamics_derivatives(q, v, a, threads=5)):
+        np.testing.assert_array_equal(x, y)
     for i in (0, 7, 19):
-        for x, y in zip(fds, compiled.forward_dynamics_derivatives(q[i], v[i], a[i])):
-            np.testing.assert_array_equal(x[i], y)
+        grow = simd_growth(compiled, q[i])
+        for x, y, g in zip(fds, compiled.forward_dynamics_derivatives(q[i], v[i], a[i]), [grow, grow * grow, grow, grow]):
+            assert_simd_close(x[i], y, g)
         for x, y in zip(ids, compiled.inverse_dynamics_derivatives(q[i], v[i], a[i])):
-            np.testing.assert_array_equal(x[i], y)
+            assert_simd_close(x[i], y)
 
 
 def test_compiled_batch_threads_and_errors(pair):
@@ -110,7 +115,7 @@ def test_compiled_batch_threads_and_errors(pair):
     tau = compiled.inverse_dynamics(q, v, a, threads=2)
     np.testing.assert_array_equal(tau, compiled.inverse_dynamics(q, v, a))
     for i in range(len(q)):
-        np.testing.assert_array_equal(tau[i], compiled.inverse_dynamics(q[i], v[i], a[i]))
+        assert_simd_close(tau[i], compiled.inverse_dynamics(q[i], v[i], a[i]))
     np.testing.assert_array_equal(compiled.forward_dynamics(q, v, tau, threads=3), compiled.forward_dynamics(q, v, tau))
     assert rel_err(compiled.forward_dynamics(q, v, tau), a) < 1e-9
     with pytest.raises(ValueError, match=r"argument 'q' must have shape \(%d,\) or \(N, %d\)" % (runtime.nq, runtime.nq)):
@@ -119,6 +124,30 @@ def test_compiled_batch_threads_and_errors(pair):
         compiled.mass_matrix(np.zeros(runtime.nq, dtype=np.float32))
     with pytest.raises(KeyError, match="unknown link"):
         compiled.jacobian("nope", q[0])
+
+
+@pytest.mark.parametrize("n", [1, 3, 33, 130])
+def test_compiled_batches_run_on_simd_packs(pair, n):
+    """Every function of a batch (NS/batch.hpp: packs of 2 to 16 states, a partial last pack, blocks of
+    64 states per call) against single calls, and bitwise the same for every thread count."""
+    compiled, runtime, floating, _ = pair
+    q, v, a = random_states(runtime, n, seed=20 + n, floating=floating)
+    body = runtime.body_names[-1]
+    functions = [
+        (lambda th: compiled.forward_kinematics(q, threads=th), lambda i: compiled.forward_kinematics(q[i]), False),
+        (lambda th: compiled.inverse_dynamics(q, v, a, threads=th), lambda i: compiled.inverse_dynamics(q[i], v[i], a[i]), False),
+        (lambda th: compiled.mass_matrix(q, threads=th), lambda i: compiled.mass_matrix(q[i]), False),
+        (lambda th: compiled.forward_dynamics(q, v, a, threads=th), lambda i: compiled.forward_dynamics(q[i], v[i], a[i]), True),
+        (lambda th: compiled.jacobian(body, q, threads=th), lambda i: compiled.jacobian(body, q[i]), False),
+        (lambda th: compiled.center_of_mass(q, threads=th), lambda i: compiled.center_of_mass(q[i]), False),
+    ]
+    for batch, single, dynamics in functions:
+        out = batch(1)
+        assert out.shape[0] == n
+        for threads in (2, 3, 7):
+            np.testing.assert_array_equal(out, batch(threads))
+        for i in range(n):
+            assert_simd_close(out[i], single(i), simd_growth(compiled, q[i]) if dynamics else 1.0)
 
 
 def test_second_call_is_instant(pair, cache):

@@ -246,7 +246,9 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         const Model & md = r.model();
         const std::array<Input, 1> in{checkInput("forward_kinematics", "q", q, md.nq())};
         return r.run("forward_kinematics", in, {md.nq()}, {md.nbodies(), 4, 4}, threads,
-                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t n) { callModel(md, &Model::forwardKinematics, n, ws, p[0], o); });
+                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t states) {
+                       callModel(md, &Model::forwardKinematics, states, ws, p[0], o);
+                     });
       },
       py::arg("q"), py::kw_only(), py::arg("threads") = 1,
       doc("World pose of every link: (nbodies, 4, 4) homogeneous transforms [R p; 0 1], R the link's "
@@ -263,8 +265,8 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         checkSameBatch("inverse_dynamics", "q", in[0], "v", in[1], md.nv());
         checkSameBatch("inverse_dynamics", "q", in[0], "a", in[2], md.nv());
         return r.run("inverse_dynamics", in, {md.nq(), md.nv(), md.nv()}, {md.nv()}, threads,
-                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t n) {
-                       callModel(md, &Model::inverseDynamics, n, ws, p[0], p[1], p[2], o);
+                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t states) {
+                       callModel(md, &Model::inverseDynamics, states, ws, p[0], p[1], p[2], o);
                      });
       },
       py::arg("q"), py::arg("v"), py::arg("a"), py::kw_only(), py::arg("threads") = 1,
@@ -276,7 +278,9 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         const Model & md = r.model();
         const std::array<Input, 1> in{checkInput("mass_matrix", "q", q, md.nq())};
         return r.run("mass_matrix", in, {md.nq()}, {md.nv(), md.nv()}, threads,
-                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t n) { callModel(md, &Model::massMatrix, n, ws, p[0], o); });
+                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t states) {
+                       callModel(md, &Model::massMatrix, states, ws, p[0], o);
+                     });
       },
       py::arg("q"), py::kw_only(), py::arg("threads") = 1,
       doc("Joint-space inertia matrix H(q), (nv, nv).").c_str());
@@ -294,8 +298,8 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         checkSameBatch("forward_dynamics", "q", in[0], "v", in[1], md.nv());
         checkSameBatch("forward_dynamics", "q", in[0], "tau", in[2], md.nv());
         return r.run("forward_dynamics", in, {md.nq(), md.nv(), md.nv()}, {md.nv()}, threads,
-                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t n) {
-                       callModel(md, &Model::forwardDynamics, n, ws, p[0], p[1], p[2], o);
+                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t states) {
+                       callModel(md, &Model::forwardDynamics, states, ws, p[0], p[1], p[2], o);
                      });
       },
       py::arg("q"), py::arg("v"), py::arg("tau"), py::kw_only(), py::arg("threads") = 1,
@@ -314,8 +318,8 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         const py::ssize_t n = md.nv();
         auto out = r.template runMany<3, 2>(
             "inverse_dynamics_derivatives", in, {md.nq(), n, n}, {{{n, n}, {n, n}}}, threads,
-            [&md](auto & ws, const auto & p, const auto & o, std::ptrdiff_t n) {
-              callModel(md, &Model::inverseDynamicsDerivatives, n, ws, p[0], p[1], p[2], o[0], o[1]);
+            [&md](auto & ws, const auto & p, const auto & o, std::ptrdiff_t states) {
+              callModel(md, &Model::inverseDynamicsDerivatives, states, ws, p[0], p[1], p[2], o[0], o[1]);
             });
         return py::make_tuple(std::move(out[0]), std::move(out[1]));
       },
@@ -342,8 +346,8 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         const py::ssize_t n = md.nv();
         auto out = r.template runMany<3, 4>(
             "forward_dynamics_derivatives", in, {md.nq(), n, n}, {{{n}, {n, n}, {n, n}, {n, n}}}, threads,
-            [&md](auto & ws, const auto & p, const auto & o, std::ptrdiff_t n) {
-              callModel(md, &Model::forwardDynamicsDerivatives, n, ws, p[0], p[1], p[2], o[0], o[1], o[2], o[3]);
+            [&md](auto & ws, const auto & p, const auto & o, std::ptrdiff_t states) {
+              callModel(md, &Model::forwardDynamicsDerivatives, states, ws, p[0], p[1], p[2], o[0], o[1], o[2], o[3]);
             });
         return py::make_tuple(std::move(out[0]), std::move(out[1]), std::move(out[2]), std::move(out[3]));
       },
@@ -360,7 +364,9 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         const int b = r.bodyIndex("jacobian", body);
         const std::array<Input, 1> in{checkInput("jacobian", "q", q, md.nq())};
         return r.run("jacobian", in, {md.nq()}, {6, md.nv()}, threads,
-                     [&md, b](auto & ws, const auto & p, double * o, std::ptrdiff_t n) { callModel(md, &Model::jacobian, n, ws, b, p[0], o); });
+                     [&md, b](auto & ws, const auto & p, double * o, std::ptrdiff_t states) {
+                       callModel(md, &Model::jacobian, states, ws, b, p[0], o);
+                     });
       },
       py::arg("body"), py::arg("q"), py::kw_only(), py::arg("threads") = 1,
       doc("Jacobian (6, nv) of a link (name or index in body_names): rows [angular; linear] in world axes, "
@@ -373,7 +379,9 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
         const Model & md = r.model();
         const std::array<Input, 1> in{checkInput("center_of_mass", "q", q, md.nq())};
         return r.run("center_of_mass", in, {md.nq()}, {3}, threads,
-                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t n) { callModel(md, &Model::centerOfMass, n, ws, p[0], o); });
+                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t states) {
+                       callModel(md, &Model::centerOfMass, states, ws, p[0], o);
+                     });
       },
       py::arg("q"), py::kw_only(), py::arg("threads") = 1, doc("Centre of mass (3,) in world coordinates.").c_str());
   return cls;

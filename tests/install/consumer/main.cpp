@@ -2,7 +2,8 @@
 //  1. the runtime (rbdgen::runtime): a 1 kg point mass on a 1 m massless rod, horizontal
 //     (q = 0, rod along +x, joint axis y): the holding torque is -m g l = -9.81 N m;
 //  2. the header generated at build time by generate_robot_dynamics() from robots/pendulum.urdf,
-//     checked against the closed form below.
+//     checked against the closed form below, and its batch header (BATCH: the same on SIMD packs,
+//     over threads).
 //
 // robots/pendulum.urdf: revolute joint at the origin, axis +y; bob of m = 1 kg with its centre of
 // mass at (0, 0, -l), l = 1 m, in the link frame, inertia I_c = 4e-5 kg m^2 about every axis.
@@ -17,7 +18,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include <pendulum/dynamics.hpp>
+#include <pendulum/batch.hpp>
 
 #include <rbd/FK.h>
 #include <rbd/FV.h>
@@ -60,10 +61,12 @@ int main()
   static_assert(pendulum::nq == 1 && pendulum::nv == 1, "pendulum.urdf has one revolute joint");
   bool ok = runtimeHoldingTorque();
 
-  double errG = 0, errFD = 0, errID = 0;
+  double errG = 0, errFD = 0, errID = 0, errBatch = 0;
+  double qs[25], qds[25], taus[25], fds[25];
   for(int k = -12; k <= 12; ++k)
   {
     const double q = 0.27 * k, qd = 0.5 * k - 1, tau = 3.0 - 0.4 * k, qdd = 0.9 * k + 0.1;
+    qs[k + 12] = q, qds[k + 12] = qd, taus[k + 12] = tau;
     const pendulum::Config<double> Q = pendulum::Config<double>::Constant(q);
     const pendulum::Tangent<double> QD = pendulum::Tangent<double>::Constant(qd);
     const double gravity = m * g * l * std::sin(q);
@@ -73,8 +76,12 @@ int main()
     const double id = pendulum::inverse_dynamics<double>(Q, QD, pendulum::Tangent<double>::Constant(qdd))(0);
     errID = std::max(errID, std::abs(id - ((Ic + m * l * l) * qdd + gravity)));
   }
+  pendulum::batch::forward_dynamics<double>(qs, qds, taus, fds, 25, 2); // 25 states (N x nq arrays), 2 threads
+  for(int s = 0; s < 25; ++s)
+    errBatch = std::max(errBatch, std::abs(fds[s] - (taus[s] - m * g * l * std::sin(qs[s])) / (Ic + m * l * l)));
   ok = report("generated gravity_torques = m g l sin q", errG, 1e-12) && ok;
   ok = report("generated forward_dynamics (closed form)", errFD, 1e-12) && ok;
   ok = report("generated inverse_dynamics (closed form)", errID, 1e-12) && ok;
+  ok = report("generated batch::forward_dynamics (closed form)", errBatch, 1e-12) && ok;
   return ok ? 0 : 1;
 }

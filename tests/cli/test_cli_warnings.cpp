@@ -95,6 +95,26 @@ TEST_F(CliTest, GenerateShowsTheLoadersWarningsAndSucceeds)
   const std::string indHeader = readFile(dir() / "ind/mim/dynamics.hpp");
   EXPECT_EQ(headerInt(indHeader, "nv"), 3);
   EXPECT_NE(indHeader.find("independent mimic joints"), std::string::npos);
+  // A scene of the same robot couples them too (its full model in NS::independent), or not with
+  // --independent-mimic.
+  writeFile(dir() / "mim.xml", "<scene name=\"mims\"><robot urdf=\"mim.urdf\"/><gravity/>"
+                               "<joints><joint name=\"follower\" damping=\"0.1\"/></joints></scene>");
+  const Result sc = rbdgen({"generate", "--scene", "mim.xml", "--out", "sc"}, dir());
+  ASSERT_EQ(sc.code, 0) << sc.err;
+  EXPECT_TRUE(warns(sc, {"joint 'orphan'", "mimics joint 'stuck'"}));
+  EXPECT_EQ(stderrLines(sc.err).size(), 1u) << sc.err;
+  const std::string scHeader = readFile(dir() / "sc/mims/dynamics.hpp");
+  EXPECT_NE(scHeader.find("namespace mims::independent"), std::string::npos);
+  EXPECT_EQ(headerInt(scHeader, "nv"), 3); // the full model first
+  EXPECT_NE(scHeader.find("constexpr int nv = 2;"), std::string::npos);
+  EXPECT_NE(scHeader.find("\"follower = 2 * lead + 0\""), std::string::npos);
+  const Result scInd = rbdgen({"generate", "--scene", "mim.xml", "--out", "scind", "--independent-mimic"}, dir());
+  ASSERT_EQ(scInd.code, 0) << scInd.err;
+  EXPECT_TRUE(warns(scInd, {"mim.xml", "not coupled (--independent-mimic)", "follower = 2 * lead + 0"}));
+  const std::string scIndHeader = readFile(dir() / "scind/mims/dynamics.hpp");
+  EXPECT_EQ(scIndHeader.find("mims::independent"), std::string::npos);
+  EXPECT_EQ(scIndHeader.find("constexpr int nv = 2;"), std::string::npos);
+  EXPECT_NE(scIndHeader.find("independent mimic joints"), std::string::npos);
 }
 
 TEST_F(CliTest, MimicCycleIsAnError)

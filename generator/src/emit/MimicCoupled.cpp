@@ -102,6 +102,39 @@ bool coupledForwardDynamics(const RobotModel & rm, const rbd::parsers::MimicCoup
   return rm.checks.stackedFree.empty() && coupledMasslessJoints(rm, c).empty();
 }
 
+std::string mimicProjection(const rbd::parsers::MimicCoupling & c)
+{
+  auto lines = [](std::string s) {
+    if(!s.empty() && s.back() == '\n') s.pop_back(); // the template line ends it
+    return s;
+  };
+  return fillTemplate(templateText("mimic_projection.hpp.in"),
+                      {{"expand_configuration", lines(expandConfiguration(c))},
+                       {"expand_tangent", lines(expandTangent(c))},
+                       {"project_columns", lines(projectColumns(c))}},
+                      "templates/mimic_projection.hpp.in");
+}
+
+RobotModel coupledView(const RobotModel & rm, const rbd::parsers::MimicCoupling & c)
+{
+  RobotModel view = rm;
+  view.joints.clear();
+  for(const MovingJoint & mj : rm.joints)
+  {
+    const auto v0 = static_cast<std::size_t>(mj.vIndex), q0 = static_cast<std::size_t>(mj.qIndex);
+    // a joint keeps its coordinates when the coupled coordinate its first dof follows is its own
+    if(mj.nv == 0 || c.dofJoints[static_cast<std::size_t>(c.vSource[v0])] != mj.name) continue;
+    MovingJoint j = mj;
+    j.qIndex = c.qSource[q0];
+    j.vIndex = c.vSource[v0];
+    view.joints.push_back(j);
+  }
+  view.nq = c.nq;
+  view.nv = c.nv;
+  view.dofNames = c.dofJoints;
+  return view;
+}
+
 std::string mimicCoupledSection(const rbd::parsers::MimicCoupling & c, const std::string & ns, bool forwardDynamics,
                                 bool derivatives)
 {
@@ -119,9 +152,7 @@ std::string mimicCoupledSection(const rbd::parsers::MimicCoupling & c, const std
                                         "+ dense L D L^T factorisation"
                                       : "none (singular coupled mass matrix)";
   v["has_forward_dynamics"] = forwardDynamics ? "true" : "false";
-  v["expand_configuration"] = expandConfiguration(c);
-  v["expand_tangent"] = expandTangent(c);
-  v["project_columns"] = projectColumns(c);
+  v["projection"] = mimicProjection(c);
   const std::string text = selectSections(templateText("mimic_coupled.hpp.in"),
                                           {{"forward_dynamics", forwardDynamics},
                                            {"no_forward_dynamics", !forwardDynamics},

@@ -3,6 +3,7 @@
 #include "SceneHeader.h"
 #include "RobotValues.h"
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -11,6 +12,7 @@
 #include <rbd/scene/Integrators.h>
 
 #include "../passes/JointKernels.h"
+#include "MimicCoupled.h"
 #include "StepDerivatives.h"
 #include "Template.h"
 
@@ -115,10 +117,25 @@ JointLines jointLines(const RobotModel & rm)
   return L;
 }
 
-std::string initialStateLines(const rbd::scene::Scene & scene, const rbd::scene::SceneRobot & sr)
+/// The scene's initial state as literals; with `view` (the coupled view of rm), its coupled
+/// coordinates (each kept joint's own, the mimic joints' dropped).
+std::string initialStateLines(const rbd::scene::Scene & scene, const rbd::scene::SceneRobot & sr, const RobotModel & rm,
+                              const RobotModel * view = nullptr)
 {
   const rbd::scene::SceneDynamics dyn(sr, scene);
-  const rbd::scene::SceneState<double> s0 = rbd::scene::initialState(dyn);
+  rbd::scene::SceneState<double> s0 = rbd::scene::initialState(dyn);
+  if(view)
+  {
+    rbd::scene::SceneState<double> c{Eigen::VectorXd(view->nq), Eigen::VectorXd(view->nv)};
+    for(const MovingJoint & vj : view->joints)
+      for(const MovingJoint & mj : rm.joints)
+        if(mj.name == vj.name)
+        {
+          c.q.segment(vj.qIndex, vj.nq) = s0.q.segment(mj.qIndex, mj.nq);
+          c.alpha.segment(vj.vIndex, vj.nv) = s0.alpha.segment(mj.vIndex, mj.nv);
+        }
+    s0 = c;
+  }
   std::string out;
   std::string q, a;
   for(Eigen::Index i = 0; i < s0.q.size(); ++i) q += (i ? ", " : "") + literal(s0.q[i]);
@@ -130,35 +147,52 @@ std::string initialStateLines(const rbd::scene::Scene & scene, const rbd::scene:
   return out;
 }
 
-std::string outputs(const RobotModel & rm, const rbd::scene::Scene & scene, const SceneEffects & fx)
+/// Arguments of a coupled wrapper: the coupled q (and alpha) expanded to the full model's.
+const char * const kExpandedQ = "expand_configuration<S>(q)";
+const char * const kExpandedQA = "expand_configuration<S>(q), expand_tangent<S>(alpha)";
+
+/// The outputs' functions; coupled: each a call of independent::'s on the expanded state (Jacobian
+/// columns projected).
+std::string outputs(const RobotModel & rm, const rbd::scene::Scene & scene, const SceneEffects & fx, bool coupled = false)
 {
   const rbd::scene::Outputs & o = scene.outputs;
   std::string poses, jacobians;
   for(const std::string & link : o.poses)
   {
     const int b = bodyIndex(rm, link);
+    const std::string & ident = rm.bodies[static_cast<std::size_t>(b)].ident;
     poses += fill("scene_output_pose.hpp.in", {},
-                  {{"link", link}, {"ident", rm.bodies[static_cast<std::size_t>(b)].ident}, {"body", linkPoseBody(rm, b).text}});
+                  {{"link", link}, {"ident", ident},
+                   {"body", coupled ? fmt::format("  res = independent::pose_{}<S>({});", ident, kExpandedQ)
+                                    : linkPoseBody(rm, b).text}});
   }
   for(const std::string & link : o.jacobians)
   {
     const int b = bodyIndex(rm, link);
+    const std::string & ident = rm.bodies[static_cast<std::size_t>(b)].ident;
     jacobians += fill("scene_output_jacobian.hpp.in", {},
-                      {{"link", link}, {"ident", rm.bodies[static_cast<std::size_t>(b)].ident},
-                       {"body", linkJacobianBody(rm, b).text}});
+                      {{"link", link}, {"ident", ident},
+                       {"body", coupled ? fmt::format("  J = project_columns<S, 6>(independent::jacobian_{}<S>({}));", ident, kExpandedQ)
+                                        : linkJacobianBody(rm, b).text}});
   }
   const bool potential = o.energy && fx.gravity.has_value();
   std::map<std::string, std::string> v{{"poses", poses}, {"jacobians", jacobians}};
-  if(o.com) v["fn_center_of_mass"] = centerOfMassQBody(rm).text;
-  if(o.momentum) v["fn_centroidal_momentum"] = centroidalMomentumBody(rm).text;
+  if(o.com)
+    v["fn_center_of_mass"] = coupled ? fmt::format("  com = independent::center_of_mass<S>({});", kExpandedQ) : centerOfMassQBody(rm).text;
+  if(o.momentum)
+    v["fn_centroidal_momentum"] =
+        coupled ? fmt::format("  h = independent::centroidal_momentum<S>({});", kExpandedQA) : centroidalMomentumBody(rm).text;
   if(o.energy)
   {
-    v["fn_kinetic_energy"] = energyBody(rm, fx, true).text;
+    v["fn_kinetic_energy"] =
+        coupled ? fmt::format("  e = independent::kinetic_energy<S>({});", kExpandedQA) : energyBody(rm, fx, true).text;
     v["kinetic_doc"] = fx.hasArmature() ? "alpha^T (H + diag(armature)) alpha / 2" : "alpha^T H alpha / 2";
     v["potential_doc"] = potential ? " + potential_energy" : "";
     v["potential_call"] = potential ? " + potential_energy<S>(q)" : "";
   }
-  if(potential) v["fn_potential_energy"] = energyBody(rm, fx, false).text;
+  if(potential)
+    v["fn_potential_energy"] =
+        coupled ? fmt::format("  e = independent::potential_energy<S>({});", kExpandedQ) : energyBody(rm, fx, false).text;
   return fill("scene_outputs.hpp.in", {{"com", o.com}, {"momentum", o.momentum}, {"energy", o.energy}, {"potential", potential}},
               v);
 }
@@ -249,9 +283,20 @@ std::string noForwardDynamicsNote(const std::vector<std::string> & joints)
                      names);
 }
 
-std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & scene, const rbd::scene::SceneRobot & sr,
-                            const std::string & ns, const std::string & provenance)
+bool coupledSceneForwardDynamics(const RobotModel & rm, const SceneEffects & fx, const rbd::parsers::MimicCoupling & c)
 {
+  if(!rm.checks.stackedFree.empty()) return false;
+  const std::vector<std::string> unregularised = unregularisedMasslessJoints(rm, fx);
+  for(const std::string & j : coupledMasslessJoints(rm, c))
+    if(std::find(unregularised.begin(), unregularised.end(), j) != unregularised.end()) return false;
+  return true;
+}
+
+std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & scene, const rbd::scene::SceneRobot & sr,
+                            const std::string & ns, const std::string & provenance,
+                            const rbd::parsers::MimicCoupling & coupling)
+{
+  const bool coupled = !coupling.empty();
   const SceneEffects fx = sceneEffects(rm, scene, sr);
   const bool gravity = fx.gravity.has_value(), velocity = fx.velocityTerms;
   const bool wrenches = !fx.wrenchBodies.empty(), contacts = !fx.contacts.empty();
@@ -277,17 +322,23 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
       {"semi_implicit_euler", scene.integrator == rbd::scene::Integrator::SemiImplicitEuler},
       {"explicit_euler", scene.integrator == rbd::scene::Integrator::ExplicitEuler},
       {"derivatives", scene.outputs.derivatives},
+      {"own_model", true},
+      {"coupled", false},
+      {"independent_alias", !coupled},
   };
   std::map<std::string, std::string> v;
   v["provenance"] = provenance;
-  v["namespace"] = ns;
+  if(coupled)
+    v["provenance"] += fmt::format("\n// Mimic joints coupled: nq = {}, nv = {} in namespace {} (the full model first, in {}::independent).",
+                                   coupling.nq, coupling.nv, ns, ns);
+  v["namespace"] = coupled ? ns + "::independent" : ns;
   v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
   v["detail_lanes"] = templateText("detail_lanes.hpp.in"); // detail::Lanes<S> (one state, or a pack: batch.hpp)
   if(scene.outputs.derivatives) v["detail_opaque"] = templateText("detail_opaque.hpp.in"); // detail::opaque (derivatives)
   v.merge(robotTemplateValues(rm)); // nq, nv, nbodies, Body enum, names
   v.erase("nframes");                // not shown by the scene header
   v["has_forward_dynamics"] = fd ? "true" : "false";
-  v["initial_state"] = initialStateLines(scene, sr);
+  v["initial_state"] = initialStateLines(scene, sr, rm);
   v["wrench_param"] = wrenches ? ", [[maybe_unused]] const Wrenches<S> & wrenches" : "";
   if(gravity) v["gravity"] = fmt::format("{:.17g}, {:.17g}, {:.17g}", (*fx.gravity)[0], (*fx.gravity)[1], (*fx.gravity)[2]);
   if(wrenches)
@@ -367,7 +418,109 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
     if(fd) v["step_derivatives"] = sceneStepDerivatives(rm, scene.integrator, wrenches, J.normalize);
   }
   v["outputs"] = outputs(rm, scene, fx);
-  return fill("scene_dynamics.hpp.in", flags, v);
+  std::string header = fill("scene_dynamics.hpp.in", flags, v);
+  if(!coupled) return header;
+
+  // The scene's API in the coupled coordinates: the same template, each function a call of the full
+  // model's (independent::) on the expanded state, projected; forward dynamics by the dense L D L^T of
+  // the coupled mass matrix; per-joint code (integrate, step derivatives) from the coupled view.
+  const RobotModel view = coupledView(rm, coupling);
+  const JointLines Jc = jointLines(view);
+  const bool fdc = coupledSceneForwardDynamics(rm, fx, coupling);
+  flags["own_model"] = false;
+  flags["coupled"] = true;
+  flags["independent_alias"] = false;
+  flags["forward_dynamics"] = fdc;
+  flags["no_forward_dynamics"] = !fdc;
+  flags["quaternion"] = Jc.free || Jc.spherical;
+  flags["free"] = Jc.free;
+  flags["planar"] = Jc.planar;
+  for(const char * k : {"body_enum", "body_names", "equation_doc", "detail_lanes", "detail_sincos", "detail_opaque",
+                        "no_forward_dynamics_note", "fn_forward_dynamics", "fn_forward_dynamics_derivatives",
+                        "step_derivatives", "integrate", "configuration_derivative", "normalize_quaternions", "fd_doc"})
+    v.erase(k);
+  std::string list;
+  for(const std::string & m : coupling.coupled) list += "\n//   " + m;
+  v["provenance"] = fmt::format(
+      "\n// ================================================================================================\n"
+      "// The scene as the URDF means it: mimic joints coupled to the joints they follow:{}\n"
+      "// The coupled coordinates are those of `independent` without the mimic joints' (same order):\n"
+      "//   q_full = G q + o,  alpha_full = G alpha,  alphaD_full = G alphaD   (expand_*),\n"
+      "// G (independent::nv x nv) with one multiplier per row, o the offsets; then every torque-like result is\n"
+      "// G^T of the full model's, H = G^T H_full G, J = J_full G (project_*); equations of motion:\n"
+      "//   G^T H_full G alphaD = tau - G^T generalized_bias_full   (wrenches and contacts act on the full model).",
+      list);
+  v["namespace"] = ns;
+  v["nq"] = std::to_string(coupling.nq);
+  v["nv"] = std::to_string(coupling.nv);
+  v["dof_names"] = quotedList(coupling.dofJoints);
+  v["nmimic"] = std::to_string(coupling.coupled.size());
+  v["mimic_couplings"] = quotedList(coupling.coupled);
+  v["projection"] = mimicProjection(coupling);
+  v["has_forward_dynamics"] = fdc ? "true" : "false";
+  v["initial_state"] = initialStateLines(scene, sr, rm, &view);
+  const std::string w = wrenches ? ", wrenches" : "";
+  auto projected = [&](const std::string & dst, const std::string & fn, const std::string & args) {
+    return fmt::format("  {} = project_tangent<S>(independent::{}<S>({}));", dst, fn, args);
+  };
+  if(contacts) v["fn_contact_forces"] = fmt::format("  res = independent::contact_forces<S>({});", kExpandedQA);
+  v["fn_mass_matrix"] = fmt::format("  H = project_matrix<S>(independent::mass_matrix<S>({}));", kExpandedQ);
+  if(gravity) v["fn_gravity_torques"] = projected("tau", "gravity_torques", kExpandedQ);
+  if(velocity) v["fn_velocity_torques"] = projected("tau", "velocity_torques", kExpandedQA);
+  if(gravity || velocity) v["fn_nonlinear_effects"] = projected("tau", "nonlinear_effects", kExpandedQA);
+  v["fn_inverse_dynamics"] = projected("tau", "inverse_dynamics", std::string(kExpandedQA) + ", expand_tangent<S>(alphaD)" + w);
+  if(genBias) v["fn_generalized_bias"] = projected("tau", "generalized_bias", kExpandedQA + w);
+  const std::string bias = genBias ? " - generalized_bias<S>(q, alpha" + w + ")" : "";
+  for(const char * k : {"wrench_arg", "wrench_doc", "integrator_doc"}) v.erase(k);
+  if(fdc)
+  {
+    v["wrench_arg"] = w;
+    v["wrench_doc"] = wrenches ? " and the wrenches" : "";
+    v["integrator_doc"] = integratorDoc(scene.integrator);
+    v["fd_doc"] = std::string("mass matrix") + (fx.hasArmature() ? " (armature included)" : "") +
+                  " and generalized bias of the full model projected, dense L D L^T factorisation";
+    v["fn_forward_dynamics"] = fmt::format("  Eigen::Matrix<S, nv, nv> LD = mass_matrix<S>(q);\n"
+                                           "  detail::ldlt_in_place<S>(LD);\n"
+                                           "  alphaD = tau{};\n"
+                                           "  detail::ldlt_solve<S, 1>(LD, alphaD);",
+                                           bias);
+    v["integrate"] = Jc.integrate;
+    if(rk4)
+    {
+      v["configuration_derivative"] = Jc.derivative;
+      v["normalize_quaternions"] = Jc.normalize;
+    }
+  }
+  else
+    v["no_forward_dynamics_note"] = "// No forward dynamics: the coupled mass matrix is singular (joints moving only massless links\n"
+                                    "// without armature; see independent::).";
+  if(scene.outputs.derivatives)
+  {
+    v["fn_inverse_dynamics_derivatives"] = fmt::format(
+        "  const auto full = independent::inverse_dynamics_derivatives<S>({}, expand_tangent<S>(alphaD){});\n"
+        "  d.dtau_dq = project_matrix<S>(full.dtau_dq);\n"
+        "  d.dtau_dalpha = project_matrix<S>(full.dtau_dalpha);",
+        kExpandedQA, w);
+    if(fdc)
+    {
+      // d alphaD = -H^-1 d ID at alphaD, d alphaD / d tau = H^-1 (coupled H)
+      v["fn_forward_dynamics_derivatives"] = fmt::format("  Eigen::Matrix<S, nv, nv> LD = mass_matrix<S>(q);\n"
+                                                         "  detail::ldlt_in_place<S>(LD);\n"
+                                                         "  d.alphaD = tau{0};\n"
+                                                         "  detail::ldlt_solve<S, 1>(LD, d.alphaD);\n"
+                                                         "  const IdDerivatives<S> id = inverse_dynamics_derivatives<S>(q, alpha, d.alphaD{1});\n"
+                                                         "  d.dalphaD_dq = -id.dtau_dq;\n"
+                                                         "  d.dalphaD_dalpha = -id.dtau_dalpha;\n"
+                                                         "  d.Minv.setIdentity();\n"
+                                                         "  detail::ldlt_solve<S, nv>(LD, d.dalphaD_dq);\n"
+                                                         "  detail::ldlt_solve<S, nv>(LD, d.dalphaD_dalpha);\n"
+                                                         "  detail::ldlt_solve<S, nv>(LD, d.Minv);",
+                                                         bias, w);
+      v["step_derivatives"] = sceneStepDerivatives(view, scene.integrator, wrenches, Jc.normalize);
+    }
+  }
+  v["outputs"] = outputs(rm, scene, fx, true);
+  return header + fill("scene_dynamics.hpp.in", flags, v);
 }
 
 } // namespace rbdgen::emit

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <rbd/parsers/MimicCoupling.h>
 #include <rbd/scene/SceneLoader.h>
 
 #include "../model/RobotModel.h"
@@ -27,9 +28,16 @@ std::string describeEffects(const rbd::scene::Scene & scene, const SceneEffects 
 /// The comment that replaces forward dynamics when the mass matrix is singular.
 std::string noForwardDynamicsNote(const std::vector<std::string> & joints);
 
-/// The whole header text; provenance: the lines that open it (comments).
+/// Whether the scene's coupled system (mimic joints coupled) has forward dynamics: no stacked free
+/// joints, and no joint group that moves only massless links without armature.
+bool coupledSceneForwardDynamics(const RobotModel & rm, const SceneEffects & fx, const rbd::parsers::MimicCoupling & c);
+
+/// The whole header text; provenance: the lines that open it (comments). A non-empty coupling
+/// (mimic joints) emits the full model in ns::independent and the scene's API in the coupled
+/// coordinates in ns (the same functions, projected: templates/mimic_projection.hpp.in); otherwise
+/// ns::independent is an alias of ns.
 std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & scene,
                             const rbd::scene::SceneRobot & sceneRobot, const std::string & ns,
-                            const std::string & provenance);
+                            const std::string & provenance, const rbd::parsers::MimicCoupling & coupling = {});
 
 } // namespace rbdgen::emit

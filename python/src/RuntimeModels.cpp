@@ -22,12 +22,12 @@ void writePose(const sva::PTransformd & X, double * out)
   T.topRightCorner<3, 1>() = X.translation();
 }
 
-std::vector<std::string> jointDofNames(const rbd::MultiBody & mb)
+/// G (full nv x coupled nv), one multiplier per row.
+Eigen::MatrixXd couplingMatrix(const rbd::parsers::MimicCoupling & c, int nvFull)
 {
-  std::vector<std::string> names;
-  for(const auto & j : mb.joints())
-    for(int d = 0; d < j.dof(); ++d) names.push_back(j.name());
-  return names;
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(nvFull, c.nv);
+  for(std::size_t k = 0; k < c.vSource.size(); ++k) G(static_cast<Eigen::Index>(k), c.vSource[k]) = c.vMultiplier[k];
+  return G;
 }
 
 } // namespace
@@ -45,9 +45,7 @@ UrdfModel::UrdfModel(const std::string & path, bool floatingBase, const std::str
   warnings_ = r.warnings;
   coupling_ = rbd::parsers::coupleMimics(r, path, &warnings_);
   if(coupling_.empty()) coupling_ = rbd::parsers::independentJoints(mb_);
-  G_ = Eigen::MatrixXd::Zero(mb_.nrDof(), nv());
-  for(std::size_t k = 0; k < coupling_.vSource.size(); ++k)
-    G_(static_cast<Eigen::Index>(k), coupling_.vSource[k]) = coupling_.vMultiplier[k];
+  G_ = couplingMatrix(coupling_, mb_.nrDof());
   for(const auto & b : mb_.bodies())
   {
     const auto it = r.bodyBaseTransforms.find(b.name());
@@ -203,62 +201,102 @@ SceneModel::SceneModel(const std::string & path)
   const rbd::scene::SceneRobot robot = rbd::scene::loadSceneRobot(scene);
   dyn_ = std::make_unique<rbd::scene::SceneDynamics>(robot, scene);
   name_ = scene.name;
+  warnings_ = robot.robot.warnings;
+  coupling_ = rbd::parsers::coupleMimics(robot.robot, scene.urdf, &warnings_);
+  if(coupling_.empty()) coupling_ = rbd::parsers::independentJoints(dyn_->mb());
+  G_ = couplingMatrix(coupling_, dyn_->nv());
   for(const auto & b : dyn_->mb().bodies()) links_.push_back(b.name());
 }
 
-std::vector<std::string> SceneModel::dofNames() const { return jointDofNames(dyn_->mb()); }
+Eigen::VectorXd SceneModel::expandConfiguration(const double * q) const
+{
+  Eigen::VectorXd qf(dyn_->nq());
+  for(std::size_t k = 0; k < coupling_.qSource.size(); ++k)
+    qf(static_cast<Eigen::Index>(k)) = coupling_.qMultiplier[k] * q[coupling_.qSource[k]] + coupling_.qOffset[k];
+  return qf;
+}
+
+Eigen::VectorXd SceneModel::coupledAccelerations(const Eigen::VectorXd & qf, const Eigen::VectorXd & vf, const double * tau,
+                                                 Eigen::LDLT<Eigen::MatrixXd> & H) const
+{
+  H.compute(G_.transpose() * dyn_->massMatrix(qf) * G_);
+  const Eigen::VectorXd C = G_.transpose() * dyn_->inverseDynamics(qf, vf, Eigen::VectorXd::Zero(dyn_->nv()));
+  Eigen::VectorXd a = H.solve(ConstVector(tau, nv()) - C);
+  if(!a.allFinite()) throw std::runtime_error("forward dynamics: joint acceleration is not finite");
+  return a;
+}
 
 void SceneModel::forwardKinematics(Workspace &, const double * q, double * out) const
 {
-  const Eigen::VectorXd qv = ConstVector(q, nq());
-  for(std::size_t i = 0; i < links_.size(); ++i) writePose(dyn_->pose(qv, links_[i]), out + 16 * i);
+  const Eigen::VectorXd qf = expandConfiguration(q);
+  for(std::size_t i = 0; i < links_.size(); ++i) writePose(dyn_->pose(qf, links_[i]), out + 16 * i);
 }
 
 void SceneModel::inverseDynamics(Workspace &, const double * q, const double * v, const double * a, double * tau) const
 {
   Eigen::Map<Eigen::VectorXd>(tau, nv()) =
-      dyn_->inverseDynamics(ConstVector(q, nq()), ConstVector(v, nv()), ConstVector(a, nv()));
+      G_.transpose() * dyn_->inverseDynamics(expandConfiguration(q), expandTangent(v), expandTangent(a));
 }
 
 void SceneModel::massMatrix(Workspace &, const double * q, double * H) const
 {
-  Eigen::Map<RowMatrix>(H, nv(), nv()) = dyn_->massMatrix(ConstVector(q, nq()));
+  Eigen::Map<RowMatrix>(H, nv(), nv()) = G_.transpose() * dyn_->massMatrix(expandConfiguration(q)) * G_;
 }
 
 void SceneModel::forwardDynamics(Workspace &, const double * q, const double * v, const double * tau, double * a) const
 {
-  const Eigen::VectorXd res = dyn_->forwardDynamics(ConstVector(q, nq()), ConstVector(v, nv()), ConstVector(tau, nv()));
-  if(!res.allFinite()) throw std::runtime_error("forward dynamics: joint acceleration is not finite");
-  Eigen::Map<Eigen::VectorXd>(a, nv()) = res;
+  const Eigen::VectorXd qf = expandConfiguration(q), vf = expandTangent(v);
+  if(coupling_.empty())
+  {
+    const Eigen::VectorXd res = dyn_->forwardDynamics(qf, vf, ConstVector(tau, nv()));
+    if(!res.allFinite()) throw std::runtime_error("forward dynamics: joint acceleration is not finite");
+    Eigen::Map<Eigen::VectorXd>(a, nv()) = res;
+    return;
+  }
+  Eigen::LDLT<Eigen::MatrixXd> H;
+  Eigen::Map<Eigen::VectorXd>(a, nv()) = coupledAccelerations(qf, vf, tau, H);
 }
 
 void SceneModel::jacobian(Workspace &, int body, const double * q, double * J) const
 {
-  Eigen::Map<RowMatrix>(J, 6, nv()) = dyn_->jacobian(ConstVector(q, nq()), links_[static_cast<std::size_t>(body)]);
+  Eigen::Map<RowMatrix>(J, 6, nv()) = dyn_->jacobian(expandConfiguration(q), links_[static_cast<std::size_t>(body)]) * G_;
 }
 
 void SceneModel::centerOfMass(Workspace &, const double * q, double * c) const
 {
-  Eigen::Map<Eigen::Vector3d>{c} = dyn_->centerOfMass(ConstVector(q, nq()));
+  Eigen::Map<Eigen::Vector3d>{c} = dyn_->centerOfMass(expandConfiguration(q));
 }
 
 void SceneModel::inverseDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * a,
                                             double * dtauDq, double * dtauDv) const
 {
-  const auto d = dyn_->inverseDynamicsDerivatives(ConstVector(q, nq()), ConstVector(v, nv()), ConstVector(a, nv()));
-  Eigen::Map<RowMatrix>(dtauDq, nv(), nv()) = d.dtauDq;
-  Eigen::Map<RowMatrix>(dtauDv, nv(), nv()) = d.dtauDalpha;
+  const auto d = dyn_->inverseDynamicsDerivatives(expandConfiguration(q), expandTangent(v), expandTangent(a));
+  Eigen::Map<RowMatrix>(dtauDq, nv(), nv()) = G_.transpose() * d.dtauDq * G_;
+  Eigen::Map<RowMatrix>(dtauDv, nv(), nv()) = G_.transpose() * d.dtauDalpha * G_;
 }
 
 void SceneModel::forwardDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * tau,
                                             double * a, double * daDq, double * daDv, double * Minv) const
 {
-  const auto d = dyn_->forwardDynamicsDerivatives(ConstVector(q, nq()), ConstVector(v, nv()), ConstVector(tau, nv()));
-  if(!d.alphaD.allFinite()) throw std::runtime_error("forward dynamics: joint acceleration is not finite");
-  Eigen::Map<Eigen::VectorXd>(a, nv()) = d.alphaD;
-  Eigen::Map<RowMatrix>(daDq, nv(), nv()) = d.dalphaDDq;
-  Eigen::Map<RowMatrix>(daDv, nv(), nv()) = d.dalphaDDalpha;
-  Eigen::Map<RowMatrix>(Minv, nv(), nv()) = d.Minv;
+  const Eigen::VectorXd qf = expandConfiguration(q), vf = expandTangent(v);
+  if(coupling_.empty())
+  {
+    const auto d = dyn_->forwardDynamicsDerivatives(qf, vf, ConstVector(tau, nv()));
+    if(!d.alphaD.allFinite()) throw std::runtime_error("forward dynamics: joint acceleration is not finite");
+    Eigen::Map<Eigen::VectorXd>(a, nv()) = d.alphaD;
+    Eigen::Map<RowMatrix>(daDq, nv(), nv()) = d.dalphaDDq;
+    Eigen::Map<RowMatrix>(daDv, nv(), nv()) = d.dalphaDDalpha;
+    Eigen::Map<RowMatrix>(Minv, nv(), nv()) = d.Minv;
+    return;
+  }
+  // d alphaD = -H^-1 G^T dID_full G at alphaD, d alphaD / d tau = H^-1 (coupled H).
+  Eigen::LDLT<Eigen::MatrixXd> H;
+  const Eigen::VectorXd alphaD = coupledAccelerations(qf, vf, tau, H);
+  Eigen::Map<Eigen::VectorXd>(a, nv()) = alphaD;
+  const auto d = dyn_->inverseDynamicsDerivatives(qf, vf, G_ * alphaD);
+  Eigen::Map<RowMatrix>(daDq, nv(), nv()) = -H.solve(G_.transpose() * d.dtauDq * G_);
+  Eigen::Map<RowMatrix>(daDv, nv(), nv()) = -H.solve(G_.transpose() * d.dtauDalpha * G_);
+  Eigen::Map<RowMatrix>(Minv, nv(), nv()) = H.solve(Eigen::MatrixXd::Identity(nv(), nv()));
 }
 
 } // namespace rbdgen_py

@@ -91,6 +91,10 @@ private:
   std::vector<std::string> warnings_;
 };
 
+/// A scene (rbd::scene::SceneDynamics: the scene's effects on every joint) with its URDF's mimic
+/// joints coupled as in the generated scene header: each function of the full scene at the expanded
+/// state, projected (tau = G^T tau_full, H = G^T (H_full + A) G, J = J_full G), forward dynamics
+/// through the coupled H.
 class SceneModel
 {
 public:
@@ -100,12 +104,12 @@ public:
 
   explicit SceneModel(const std::string & path);
 
-  int nq() const { return dyn_->nq(); }
-  int nv() const { return dyn_->nv(); }
+  int nq() const { return coupling_.nq; }
+  int nv() const { return coupling_.nv; }
   int nbodies() const { return static_cast<int>(links_.size()); }
   bool hasForwardDynamics() const { return true; }
   const std::string & name() const { return name_; }
-  std::vector<std::string> dofNames() const;
+  std::vector<std::string> dofNames() const { return coupling_.dofJoints; }
   std::vector<std::string> bodyNames() const { return links_; }
 
   Workspace makeWorkspace() const { return {}; }
@@ -123,10 +127,22 @@ public:
   void forwardDynamicsDerivatives(Workspace &, const double * q, const double * v, const double * tau, double * a,
                                   double * daDq, double * daDv, double * Minv) const;
 
+  const std::vector<std::string> & warnings() const { return warnings_; }
+
 private:
+  /// q_full = G q + o, and G x for a coupled tangent vector x.
+  Eigen::VectorXd expandConfiguration(const double * q) const;
+  Eigen::VectorXd expandTangent(const double * x) const { return G_ * Eigen::Map<const Eigen::VectorXd>(x, nv()); }
+  /// alphaD of the coupled system: (G^T H G) alphaD = tau - G^T ID_full(q, G v, 0); also its H.
+  Eigen::VectorXd coupledAccelerations(const Eigen::VectorXd & qf, const Eigen::VectorXd & vf, const double * tau,
+                                       Eigen::LDLT<Eigen::MatrixXd> & H) const;
+
   std::unique_ptr<rbd::scene::SceneDynamics> dyn_;
+  rbd::parsers::MimicCoupling coupling_;
+  Eigen::MatrixXd G_; ///< full nv x coupled nv
   std::string name_;
   std::vector<std::string> links_;
+  std::vector<std::string> warnings_;
 };
 
 /// rbdgen.Robot: either model, one Python class.

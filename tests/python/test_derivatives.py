@@ -6,6 +6,8 @@ joints that is q_m + ε; for the free base of a floating robot (q = [qw qx qy qz
 [w; v] in the base frame) it is quat ⊗ exp(ε e_m / 2) for m < 3 and x += ε R(quat) e_(m-3) for
 3 <= m < 6 (rbd/EulerIntegration.h), which `step` below writes out (the package has no integrator).
 The generated code's derivatives are compared with these in test_compile.py."""
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -166,3 +168,28 @@ def test_scene_derivatives_with_contacts_are_differences():
     assert rel_err(da_dv, num_dv) < 1e-9  # seen 3e-11
     dtau_dq, dtau_dv = scene.inverse_dynamics_derivatives(q, v, a)
     assert rel_err(da_dq, -Minv @ dtau_dq) < 1e-12
+
+
+def test_scene_with_mimic_joints_is_the_coupled_urdf_model(tmp_path):
+    """Robot.from_scene couples mimic joints as Robot.from_urdf does: a scene of the gripper (mimic
+    pair, chain, across subtrees) with gravity and velocity terms only is the same system, evaluated
+    through the scene's code (rbd::scene::SceneDynamics, projected) and the URDF model's (rbd::)."""
+    gripper = Path(__file__).resolve().parents[1] / "generator" / "mimic_gripper.urdf"
+    xml = tmp_path / "gripper.xml"
+    xml.write_text('<scene name="gripper"><robot urdf="%s" base="floating"/><gravity/></scene>' % gripper)
+    scene = rbdgen.Robot.from_scene(xml)
+    urdf = rbdgen.Robot.from_urdf(gripper, floating_base=True)
+    assert (scene.nq, scene.nv) == (urdf.nq, urdf.nv) == (13, 12)  # 17 / 16 with the 4 mimic joints
+    assert scene.dof_names == urdf.dof_names
+    q, v, a = random_states(urdf, 4, seed=41, floating=True)
+    for qi, vi, ai in zip(q, v, a):
+        assert rel_err(scene.inverse_dynamics(qi, vi, ai), urdf.inverse_dynamics(qi, vi, ai)) < 1e-12
+        assert rel_err(scene.mass_matrix(qi), urdf.mass_matrix(qi)) < 1e-12
+        assert rel_err(scene.forward_dynamics(qi, vi, ai), urdf.forward_dynamics(qi, vi, ai)) < 1e-10
+        assert rel_err(scene.forward_kinematics(qi), urdf.forward_kinematics(qi)) < 1e-13
+        assert rel_err(scene.jacobian("flap", qi), urdf.jacobian("flap", qi)) < 1e-13
+        assert rel_err(scene.center_of_mass(qi), urdf.center_of_mass(qi)) < 1e-13
+        for x, y in zip(scene.inverse_dynamics_derivatives(qi, vi, ai), urdf.inverse_dynamics_derivatives(qi, vi, ai)):
+            assert rel_err(x, y) < 1e-11
+        for x, y in zip(scene.forward_dynamics_derivatives(qi, vi, ai), urdf.forward_dynamics_derivatives(qi, vi, ai)):
+            assert rel_err(x, y) < 1e-9

@@ -135,16 +135,21 @@ RobotModel coupledView(const RobotModel & rm, const rbd::parsers::MimicCoupling 
   return view;
 }
 
+std::map<std::string, std::string> coupledTemplateValues(const rbd::parsers::MimicCoupling & c, const std::string & ns)
+{
+  return {{"namespace", ns},
+          {"nq", std::to_string(c.nq)},
+          {"nv", std::to_string(c.nv)},
+          {"dof_names", quotedList(c.dofJoints)},
+          {"nmimic", std::to_string(c.coupled.size())},
+          {"mimic_couplings", quotedList(c.coupled)},
+          {"projection", mimicProjection(c)}};
+}
+
 std::string mimicCoupledSection(const rbd::parsers::MimicCoupling & c, const std::string & ns, bool forwardDynamics,
                                 bool derivatives)
 {
-  std::map<std::string, std::string> v;
-  v["namespace"] = ns;
-  v["nq"] = std::to_string(c.nq);
-  v["nv"] = std::to_string(c.nv);
-  v["dof_names"] = quotedList(c.dofJoints);
-  v["nmimic"] = std::to_string(c.coupled.size());
-  v["mimic_couplings"] = quotedList(c.coupled);
+  std::map<std::string, std::string> v = coupledTemplateValues(c, ns);
   std::string list;
   for(const std::string & m : c.coupled) list += (list.empty() ? "" : "; ") + m;
   v["coupled_list"] = list;
@@ -152,7 +157,6 @@ std::string mimicCoupledSection(const rbd::parsers::MimicCoupling & c, const std
                                         "+ dense L D L^T factorisation"
                                       : "none (singular coupled mass matrix)";
   v["has_forward_dynamics"] = forwardDynamics ? "true" : "false";
-  v["projection"] = mimicProjection(c);
   const std::string text = selectSections(templateText("mimic_coupled.hpp.in"),
                                           {{"forward_dynamics", forwardDynamics},
                                            {"no_forward_dynamics", !forwardDynamics},

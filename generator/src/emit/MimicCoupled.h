@@ -2,6 +2,7 @@
 // The coupled API of a robot with mimic joints (templates/mimic_coupled.hpp.in): the plain
 // header's functions in the coupled coordinates, on top of the full model emitted in
 // `<namespace>::independent`.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,10 @@ bool coupledForwardDynamics(const RobotModel & rm, const rbd::parsers::MimicCoup
 /// the coupled mass matrix (templates/mimic_projection.hpp.in), for a namespace whose Config and
 /// Tangent are the coupled ones and whose `independent` is the full model.
 std::string mimicProjection(const rbd::parsers::MimicCoupling & c);
+
+/// The template values every coupled section shows: namespace, nq, nv, dof_names, nmimic,
+/// mimic_couplings and projection (mimicProjection).
+std::map<std::string, std::string> coupledTemplateValues(const rbd::parsers::MimicCoupling & c, const std::string & ns);
 
 /// The model restricted to the coupled coordinates: the mimic joints left out, the other joints'
 /// q and alpha offsets those of the coupled system (for per-joint code such as integrate()).

@@ -450,13 +450,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
       "// G^T of the full model's, H = G^T H_full G, J = J_full G (project_*); equations of motion:\n"
       "//   G^T H_full G alphaD = tau - G^T generalized_bias_full   (wrenches and contacts act on the full model).",
       list);
-  v["namespace"] = ns;
-  v["nq"] = std::to_string(coupling.nq);
-  v["nv"] = std::to_string(coupling.nv);
-  v["dof_names"] = quotedList(coupling.dofJoints);
-  v["nmimic"] = std::to_string(coupling.coupled.size());
-  v["mimic_couplings"] = quotedList(coupling.coupled);
-  v["projection"] = mimicProjection(coupling);
+  for(auto & [key, value] : coupledTemplateValues(coupling, ns)) v[key] = value;
   v["has_forward_dynamics"] = fdc ? "true" : "false";
   v["initial_state"] = initialStateLines(scene, sr, rm, &view);
   const std::string w = wrenches ? ", wrenches" : "";

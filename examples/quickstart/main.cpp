@@ -155,7 +155,7 @@ int main()
                 mb.nrDof(), mb.nrBodies());
     return 1;
   }
-  if(robot::nv != model::nv)
+  if(mb.nrDof() != robot::nv) // mb is the full model (== model::nv, checked above)
     std::printf("mimic joints coupled: robot:: has nq = %d, nv = %d; the checks below are on the full model "
                 "robot::independent (the coupled functions are its projection, tests/generator/test_mimic_coupling)\n",
                 robot::nq, robot::nv);

@@ -98,7 +98,7 @@ template<typename T>
 class CoMMomentumTest : public ::testing::Test
 {
 };
-TYPED_TEST_SUITE(CoMMomentumTest, kinext::Scalars);
+TYPED_TEST_SUITE(CoMMomentumTest, kinext::Scalars, );
 
 // ------------------------------------------------------------------------------------------------
 // CoM

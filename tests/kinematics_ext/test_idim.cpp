@@ -32,7 +32,7 @@ template<typename T>
 class IDIMTest : public ::testing::Test
 {
 };
-TYPED_TEST_SUITE(IDIMTest, kinext::Scalars);
+TYPED_TEST_SUITE(IDIMTest, kinext::Scalars, );
 
 // phi layout [m, h, Ixx, Ixy, Ixz, Iyy, Iyz, Izz], round trip, stacking per body.
 TYPED_TEST(IDIMTest, InertialParameterVector)

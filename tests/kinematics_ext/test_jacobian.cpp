@@ -75,7 +75,7 @@ template<typename T>
 class JacobianTest : public ::testing::Test
 {
 };
-TYPED_TEST_SUITE(JacobianTest, kinext::Scalars);
+TYPED_TEST_SUITE(JacobianTest, kinext::Scalars, );
 
 // J alpha equals the body velocity of forwardVelocity carried to the point; same for the body
 // Jacobian, an arbitrary frame, velocity()/bodyVelocity() and the full Jacobian.

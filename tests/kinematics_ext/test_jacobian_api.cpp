@@ -21,7 +21,7 @@ template<typename T>
 class JacobianApiTest : public ::testing::Test
 {
 };
-TYPED_TEST_SUITE(JacobianApiTest, kinext::Scalars);
+TYPED_TEST_SUITE(JacobianApiTest, kinext::Scalars, );
 
 constexpr int nrCases = 12;
 

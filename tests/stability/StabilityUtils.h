@@ -65,8 +65,10 @@ inline rbd::MultiBodyGraph chainGraph(rbdtest::Rng & rng, int n, const InertiaFn
   {
     const rbd::Joint j = joint(rng, k);
     g.addJoint(j);
-    g.linkBodies("b" + std::to_string(k - 1), rbdtest::randomTransform(rng, maxOffset), "b" + std::to_string(k),
-                 rbdtest::randomTransform(rng, 0.1), j.name());
+    // one draw per statement (argument evaluation order differs between g++ and clang++)
+    const sva::PTransformd X_p_j = rbdtest::randomTransform(rng, maxOffset);
+    const sva::PTransformd X_c_j = rbdtest::randomTransform(rng, 0.1);
+    g.linkBodies("b" + std::to_string(k - 1), X_p_j, "b" + std::to_string(k), X_c_j, j.name());
   }
   return g;
 }

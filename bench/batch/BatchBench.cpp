@@ -1,5 +1,6 @@
 // The cells of bench_batch (see BatchBench.h): for each robot and algorithm,
 //   single double | single float | SIMD double | SIMD float           N states in cache, CPU time
+//   SIMD double columns | SIMD float columns                          the same, Layout::columns arrays
 //   SIMD double, 1 thread | 2 threads | SIMD float, 1 thread | 2 threads   many states, wall-clock time
 // Each iteration evaluates N states of a pool of 4 x 8192 seeded random states, starting N/4 states
 // further than the previous iteration (the inputs differ from one iteration to the next), into an
@@ -110,6 +111,69 @@ double worstRelative(const std::vector<T> & x, const std::vector<double> & ref, 
   return worst;
 }
 
+/// States [first, first + N) of a row-major (states x n) array as an (n x N) array (Layout::columns).
+template<class T>
+std::vector<T> columnsOf(const std::vector<T> & rows, int n, std::size_t first, std::size_t N)
+{
+  const auto nn = static_cast<std::size_t>(n);
+  std::vector<T> c(nn * N);
+  for(std::size_t s = 0; s < N; ++s)
+    for(std::size_t k = 0; k < nn; ++k) c[k * N + s] = rows[(first + s) * nn + k];
+  return c;
+}
+
+/// The inputs of 4 disjoint windows of N states of the pool in Layout::columns.
+template<class T>
+struct ColumnWindows
+{
+  std::vector<T> q[4], v[4], u[4];
+  ColumnWindows(const BatchRobotInfo & r, const Pool<T> & pool, std::size_t N)
+  {
+    for(std::size_t w = 0; w < 4; ++w)
+    {
+      q[w] = columnsOf(pool.q, r.nq, w * N, N);
+      v[w] = columnsOf(pool.v, r.nv, w * N, N);
+      u[w] = columnsOf(pool.u, r.nv, w * N, N);
+    }
+  }
+  Inputs<T> at(std::size_t w) const { return {q[w].data(), v[w].data(), u[w].data()}; }
+};
+
+template<class T>
+const Pool<T> & poolOf(const Pools & pools)
+{
+  if constexpr(std::is_same_v<T, double>) return pools.d;
+  else return pools.f;
+}
+
+/// One in-cache cell of the batch in Layout::columns (structure of arrays): each iteration the next
+/// of 4 disjoint windows of N states, CPU time.
+template<class T>
+void registerColumnsCell(const BatchRobotInfo & r, const BatchAlgorithm<T> & a, const std::shared_ptr<const Pools> & pools,
+                         const std::string & impl, std::size_t N)
+{
+  const std::string name = std::string(r.name) + "/" + a.name + "/" + impl;
+  benchmark::internal::Benchmark * b = benchmark::RegisterBenchmark(name.c_str(), [r, a, pools, N](benchmark::State & st) {
+    const ColumnWindows<T> windows(r, poolOf<T>(*pools), N);
+    std::vector<T> out(N * static_cast<std::size_t>(a.outputSize));
+    std::size_t w = 0;
+    const double cpu0 = processCpuSeconds();
+    for(auto _ : st)
+    {
+      a.columns(windows.at(w), out.data(), N);
+      benchmark::DoNotOptimize(out.data());
+      benchmark::ClobberMemory();
+      w = (w + 1) % 4;
+    }
+    const double states = static_cast<double>(N) * static_cast<double>(st.iterations());
+    st.counters["states/s"] = benchmark::Counter(states, benchmark::Counter::kIsRate);
+    st.counters["states/s/core"] = benchmark::Counter(states, benchmark::Counter::kIsRate);
+    st.counters["N"] = static_cast<double>(N);
+    st.counters["states/cpu-s"] = states / (processCpuSeconds() - cpu0);
+  });
+  b->Unit(benchmark::kMicrosecond);
+}
+
 /// One cell of N states per call: `threads` = 0 for the single-state loop; wall-clock time when
 /// `wall` (else CPU time).
 template<class T>
@@ -118,10 +182,7 @@ void registerCell(const BatchRobotInfo & r, const BatchAlgorithm<T> & a, const s
 {
   const std::string name = std::string(r.name) + "/" + a.name + "/" + impl;
   benchmark::internal::Benchmark * b = benchmark::RegisterBenchmark(name.c_str(), [r, a, pools, N, threads](benchmark::State & st) {
-    const Pool<T> & pool = [&]() -> const Pool<T> & {
-      if constexpr(std::is_same_v<T, double>) return pools->d;
-      else return pools->f;
-    }();
+    const Pool<T> & pool = poolOf<T>(*pools);
     std::vector<T> out(N * static_cast<std::size_t>(a.outputSize));
     std::size_t first = 0;
     const double cpu0 = processCpuSeconds();
@@ -155,8 +216,17 @@ void check(const BatchRobotInfo & r, const BatchAlgorithm<double> & d, const Bat
   d.single(pools.d.at(r, 0), single.data(), N);
   d.batch(pools.d.at(r, 0), batch.data(), N, 1);
   f.batch(pools.f.at(r, 0), batchF.data(), N, 1);
-  std::printf("check %s/%s: SIMD double vs single double %.3g, SIMD float vs single double %.3g (relative, %zu states)\n",
-              r.name, d.name, worstRelative(batch, single, N, d.outputSize), worstRelative(batchF, single, N, d.outputSize), N);
+  // Layout::columns, transposed back to rows
+  const ColumnWindows<double> windows(r, pools.d, N);
+  std::vector<double> columns(n), columnsAsRows(n);
+  d.columns(windows.at(0), columns.data(), N);
+  const auto m = static_cast<std::size_t>(d.outputSize);
+  for(std::size_t s = 0; s < N; ++s)
+    for(std::size_t k = 0; k < m; ++k) columnsAsRows[s * m + k] = columns[k * N + s];
+  std::printf("check %s/%s: SIMD double vs single double %.3g, SIMD float vs single double %.3g, SIMD double columns "
+              "vs rows %.3g (relative, %zu states)\n",
+              r.name, d.name, worstRelative(batch, single, N, d.outputSize), worstRelative(batchF, single, N, d.outputSize),
+              worstRelative(columnsAsRows, batch, N, d.outputSize), N);
 }
 
 } // namespace
@@ -175,6 +245,8 @@ int registerBatchRobot(const BatchRobotInfo & robot, std::vector<BatchAlgorithm<
     registerCell(robot, f[k], pools, "single float", 0, cached, false);
     registerCell(robot, d[k], pools, "SIMD double", 1, cached, false);
     registerCell(robot, f[k], pools, "SIMD float", 1, cached, false);
+    registerColumnsCell(robot, d[k], pools, "SIMD double columns", cached);
+    registerColumnsCell(robot, f[k], pools, "SIMD float columns", cached);
     registerCell(robot, d[k], pools, "SIMD double 1 thread", 1, many, true);
     registerCell(robot, d[k], pools, "SIMD double 2 threads", 2, many, true);
     registerCell(robot, f[k], pools, "SIMD float 1 thread", 1, many, true);

@@ -8,7 +8,8 @@
 namespace rbdbench
 {
 
-/// The inputs of N consecutive states, row-major: q (N x nq), v and u (N x nv; u = alphaD or tau).
+/// The inputs of N consecutive states, row-major: q (N x nq), v and u (N x nv; u = alphaD or tau);
+/// for a `columns` function, nq x N and nv x N.
 template<class T>
 struct Inputs
 {
@@ -24,6 +25,8 @@ struct BatchAlgorithm
   int outputSize; ///< values per state
   void (*single)(const Inputs<T> & in, T * out, std::size_t N);           ///< single-state calls
   void (*batch)(const Inputs<T> & in, T * out, std::size_t N, int threads); ///< NS::batch::...
+  /// NS::batch::... with Layout::columns: in and out are (values x N) arrays (structure of arrays)
+  void (*columns)(const Inputs<T> & in, T * out, std::size_t N);
 };
 
 struct BatchRobotInfo

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The markdown table of bench_batch (scripts/bench.sh): states per second per core of a loop of
-single-state calls, of the SIMD batch and of SIMD + 2 threads, double and float, with the ratios of
+single-state calls, of the SIMD batch (rows and columns layouts) and of SIMD + 2 threads, double and float, with the ratios of
 the goals (SIMD / single loop per core: >= 3x double, >= 5x float; 2 threads / 1 thread: >= 1.8x).
 
     batch_table.py --json bench_batch.json --text bench_batch.txt --meta meta.txt --md out.md
@@ -10,7 +10,8 @@ import json
 import re
 
 IMPLS = ["single double", "single float", "SIMD double", "SIMD float", "SIMD double 1 thread", "SIMD double 2 threads",
-         "SIMD float 1 thread", "SIMD float 2 threads"]
+         "SIMD float 1 thread", "SIMD float 2 threads", "SIMD double columns", "SIMD float columns"]
+THREADS = ["SIMD double 1 thread", "SIMD double 2 threads", "SIMD float 1 thread", "SIMD float 2 threads"]
 
 
 def medians(path):
@@ -72,17 +73,21 @@ def main():
     out.append("")
     out.append("## States per second per core (in cache)")
     out.append("")
-    out.append("| robot | algorithm | N | single double | single float | SIMD double | SIMD float |")
-    out.append("|---|---|--:|--:|--:|--:|--:|")
+    out.append("| robot | algorithm | N | single double | single float | SIMD double | SIMD float | SIMD double, columns "
+               "| SIMD float, columns |")
+    out.append("|---|---|--:|--:|--:|--:|--:|--:|--:|")
     algos = list(dict.fromkeys(k[1] for k in cells))
     rows = [(robot, algo, {impl: cells.get((robot, algo, impl)) for impl in IMPLS}) for robot in robots for algo in algos]
     rows = [r for r in rows if all(v is not None for v in r[2].values())]
     for robot, algo, c in rows:
-        sd, sf, vd, vf = (c[i][1] for i in IMPLS[:4])
-        out.append("| %s | %s | %d | %s | %s | %s (%.1f×) | %s (%.1f×) |" % (
-            robot, algo, c["SIMD double"][2], fmt(sd), fmt(sf), fmt(vd), vd / sd, fmt(vf), vf / sf))
+        sd, sf, vd, vf, cd, cf = (c[i][1] for i in IMPLS[:4] + IMPLS[8:])
+        out.append("| %s | %s | %d | %s | %s | %s (%.1f×) | %s (%.1f×) | %s (%.1f×) | %s (%.1f×) |" % (
+            robot, algo, c["SIMD double"][2], fmt(sd), fmt(sf), fmt(vd), vd / sd, fmt(vf), vf / sf, fmt(cd), cd / sd,
+            fmt(cf), cf / sf))
     out.append("")
-    out.append("(×: the SIMD batch against the single-state loop of the same scalar.)")
+    out.append("(×: the SIMD batch against the single-state loop of the same scalar. SIMD: the arrays in the default "
+               "`Layout::rows` (N × item, as the single-state loop); columns: `Layout::columns` (item × N, structure of "
+               "arrays: no transposition between the states' rows and the packs).)")
     out.append("")
     out.append("## Threads (many states per call)")
     out.append("")
@@ -90,7 +95,7 @@ def main():
                "SIMD float, 1 thread | 2 threads (per core) | scaling | CPU efficiency |")
     out.append("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|")
     for robot, algo, c in rows:
-        d1, d2, f1, f2 = (c[i] for i in IMPLS[4:])
+        d1, d2, f1, f2 = (c[i] for i in THREADS)
         out.append("| %s | %s | %d | %s | %s (%s) | %.2f× | %.2f | %s | %s (%s) | %.2f× | %.2f |" % (
             robot, algo, d1[2], fmt(d1[0]), fmt(d2[0]), fmt(d2[1]), d2[0] / d1[0], d2[3] / d1[3], fmt(f1[0]), fmt(f2[0]),
             fmt(f2[1]), f2[0] / f1[0], f2[3] / f1[3]))

@@ -13,6 +13,17 @@ namespace rbdgentest
 template<class T>
 using StatesFn = void (*)(const T * const * in, T * const * out, std::size_t N, int threads);
 
+/// NS::batch::Layout: rows, an (N, item) array per argument; columns, an (item, N) array.
+enum class Layout
+{
+  rows,
+  columns
+};
+
+/// A batch function over N states, its arrays in `layout`.
+template<class T>
+using BatchFn = void (*)(const T * const * in, T * const * out, std::size_t N, int threads, Layout layout);
+
 /// What an input is: a configuration (nq values) or a tangent vector (nv values).
 enum class Input
 {
@@ -45,7 +56,7 @@ struct BatchFunction
   const char * name;
   std::vector<Input> inputs;
   std::vector<Output> outputs;
-  StatesFn<T> batch;  ///< NS::batch::...
+  BatchFn<T> batch;   ///< NS::batch::...
   StatesFn<T> single; ///< the single-state function, state after state (threads ignored)
 };
 

@@ -14,7 +14,8 @@
 //   may round differently: the difference of two evaluations of the same algorithm, bounded like
 //   test_generated's (kDouble below, grown with cond(H) for forward dynamics).
 // - float batch vs double single state: test_generated's float bounds.
-// - No heap allocation with threads = 1.
+// - Layout::columns (structure of arrays) gives Layout::rows' values bitwise.
+// - No heap allocation with threads = 1, in either layout.
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -44,6 +45,7 @@ namespace
 using rbdgentest::BatchFunction;
 using rbdgentest::BatchRobot;
 using rbdgentest::Growth;
+using rbdgentest::Layout;
 using rbdgentest::Output;
 
 constexpr std::size_t kSizes[] = {1, 3, 7, 100};
@@ -210,7 +212,7 @@ protected:
     for(int th : kThreads)
     {
       Outputs<T> o(f.outputs, N, width);
-      f.batch(in.data(), o.ptrs().data(), N, th);
+      f.batch(in.data(), o.ptrs().data(), N, th, Layout::rows);
       for(std::size_t m = 0; m < f.outputs.size(); ++m)
       {
         const std::size_t n = N * static_cast<std::size_t>(f.outputs[m].size);
@@ -310,7 +312,7 @@ TEST_P(Batch, FloatWithinFloatBoundsOfDouble)
     const States st(r(), f.inputs, N, 7);
     const std::vector<std::vector<float>> inF = st.as<float>();
     Outputs<float> batch(f.outputs, N, r().widthFloat);
-    f.batch(constPtrs(inF).data(), batch.ptrs().data(), N, 2);
+    f.batch(constPtrs(inF).data(), batch.ptrs().data(), N, 2, Layout::rows);
     Outputs<double> ref(f.outputs, N, r().widthDouble);
     r().d[k].single(constPtrs(st.in).data(), ref.ptrs().data(), N, 1);
     const std::vector<double> cond = conditioning(r(), st.in[0], N);
@@ -345,11 +347,57 @@ TEST_P(Batch, LargeAnglesUseStdSinCosPerLane)
   st.in[0][(N - 1) * static_cast<std::size_t>(r().nq) + angle] = -3e7;
   const std::vector<const double *> in = constPtrs(st.in);
   Outputs<double> batch(fk.outputs, N, r().widthDouble), single(fk.outputs, N, r().widthDouble);
-  fk.batch(in.data(), batch.ptrs().data(), N, 1);
+  fk.batch(in.data(), batch.ptrs().data(), N, 1, Layout::rows);
   fk.single(in.data(), single.ptrs().data(), N, 1);
   const std::size_t n = N * static_cast<std::size_t>(fk.outputs[0].size);
   if(!r().fused) EXPECT_EQ(std::memcmp(batch.out[0].data(), single.out[0].data(), n * sizeof(double)), 0);
   else EXPECT_LE(relError(batch.out[0].data(), single.out[0].data(), static_cast<int>(n)), kDouble);
+}
+
+/// Layout::columns (item x N arrays, the states last) gives the values of Layout::rows bitwise:
+/// the same lanes run the same code, only the loads and stores differ. Every function, double and
+/// float, N = 1, 3, 7, 100 (remainder packs), threads 1 and 2; nothing written past the N states.
+TEST_P(Batch, ColumnsLayoutEqualsRows)
+{
+  auto run = [this](const auto & fns, std::size_t width, auto zero) {
+    using T = decltype(zero);
+    for(const BatchFunction<T> & f : fns)
+      for(std::size_t N : kSizes)
+        for(int th : {1, 2})
+        {
+          const States st(r(), f.inputs, N, static_cast<unsigned>(N) + 23);
+          const std::vector<std::vector<T>> rowsIn = st.as<T>();
+          // (N, n) -> (n, N)
+          std::vector<std::vector<T>> colsIn;
+          for(const std::vector<T> & x : rowsIn)
+          {
+            const std::size_t n = x.size() / N;
+            std::vector<T> c(x.size());
+            for(std::size_t s = 0; s < N; ++s)
+              for(std::size_t k = 0; k < n; ++k) c[k * N + s] = x[s * n + k];
+            colsIn.push_back(std::move(c));
+          }
+          Outputs<T> rows(f.outputs, N, width), cols(f.outputs, N, width);
+          f.batch(constPtrs(rowsIn).data(), rows.ptrs().data(), N, th, Layout::rows);
+          f.batch(constPtrs(colsIn).data(), cols.ptrs().data(), N, th, Layout::columns);
+          for(std::size_t m = 0; m < f.outputs.size(); ++m)
+          {
+            const std::size_t n = static_cast<std::size_t>(f.outputs[m].size);
+            for(std::size_t i = N * n; i < cols.out[m].size(); ++i)
+              ASSERT_EQ(cols.out[m][i], Outputs<T>::sentinel) << f.name << ": written past the N = " << N << " states";
+            for(std::size_t s = 0; s < N; ++s)
+              for(std::size_t k = 0; k < n; ++k)
+              {
+                const T a = rows.out[m][s * n + k], b = cols.out[m][k * N + s];
+                ASSERT_EQ(std::memcmp(&a, &b, sizeof(T)), 0)
+                    << where(r(), f.name, static_cast<int>(m), N, s) << ", value " << k << ", threads " << th << ": rows " << a
+                    << ", columns " << b;
+              }
+          }
+        }
+  };
+  run(r().d, r().widthDouble, 0.0);
+  run(r().f, r().widthFloat, 0.0f);
 }
 
 TEST_P(Batch, NoHeapAllocation)
@@ -364,13 +412,16 @@ TEST_P(Batch, NoHeapAllocation)
       const std::vector<const T *> in = constPtrs(inT);
       Outputs<T> o(f.outputs, N, width);
       const std::vector<T *> op = o.ptrs();
-      long count = -1;
+      for(Layout layout : {Layout::rows, Layout::columns})
       {
-        rbdgentest::AllocationScope scope;
-        f.batch(in.data(), op.data(), N, 1);
-        count = scope.count();
+        long count = -1;
+        {
+          rbdgentest::AllocationScope scope;
+          f.batch(in.data(), op.data(), N, 1, layout);
+          count = scope.count();
+        }
+        EXPECT_EQ(count, 0) << r().name << " " << f.name << (layout == Layout::rows ? " (rows)" : " (columns)");
       }
-      EXPECT_EQ(count, 0) << r().name << " " << f.name;
     }
   };
   run(r().d, r().widthDouble, 0.0);

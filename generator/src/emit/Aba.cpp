@@ -26,7 +26,7 @@ EmittedBody abaBody(const RobotModel & rm)
   std::vector<Force> pA = inertialForces(ctx, m, true, ctx.allJoints());
   for(std::size_t k = 0; k < n; ++k)
   {
-    c[k] = cross(b, m.v[k], m.vJ[k], rm.joints[k].tag + "_c");
+    c[k] = velocityProduct(ctx, m, static_cast<int>(k), rm.joints[k].tag + "_c");
     IA[k] = fromRigid(bodyInertia(rm.joints[k]));
   }
   // Pass 2 (leaves to root): U = IA S, D = S^T U, u = tau - S^T pA,

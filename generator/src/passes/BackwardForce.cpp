@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "SharedPasses.h"
+
 namespace rbdgen::passes
 {
 
@@ -15,6 +17,9 @@ std::vector<Force> inertialForces(PassContext & ctx, const MotionState & m, bool
 {
   Block & b = ctx.block();
   std::vector<Force> f(ctx.model().joints.size(), Force::zero());
+  // v x* I v from the header's shared velocity products when m's velocities are the shared ones
+  const bool shared = velocityProducts && joints.size() == ctx.model().joints.size() && hasSharedVelocities(ctx, m);
+  if(shared) ctx.callOnce("[[maybe_unused]] const auto VPs = detail::velocity_products<S>(Vs);");
   for(int k : joints)
   {
     const auto kk = static_cast<std::size_t>(k);
@@ -23,7 +28,10 @@ std::vector<Force> inertialForces(PassContext & ctx, const MotionState & m, bool
     const Inertia I = bodyInertia(mj);
     b.comment(fmt::format("{}: f = I a{}", t, velocityProducts ? " + v x* I v" : ""));
     f[kk] = apply(b, I, m.a[kk], t + "_Ia");
-    if(velocityProducts) f[kk] = add(b, f[kk], crossDual(b, m.v[kk], apply(b, I, m.v[kk], t + "_Iv"), t + "_vxIv"), t + "_f");
+    if(!velocityProducts) continue;
+    const Force p = shared ? ctx.shared()->velocityProducts().p[kk]
+                           : crossDual(b, m.v[kk], apply(b, I, m.v[kk], t + "_Iv"), t + "_vxIv");
+    f[kk] = add(b, f[kk], p, t + "_f");
   }
   return f;
 }

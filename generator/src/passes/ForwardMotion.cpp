@@ -51,10 +51,41 @@ MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const st
     {
       const Motion aJ = req.alphaD ? jointMotion(b, K, "alphaD", mj.vIndex, t + "_aJ") : Motion::zero();
       m.a[kk] = add(b, toChild(b, mj, K, root ? a0 : m.a[p], t + "_Xa"), aJ, t + "_aa");
-      if(req.velocity && req.velocityProducts) m.a[kk] = add(b, m.a[kk], cross(b, m.v[kk], m.vJ[kk], t + "_vxvJ"), t + "_a");
+      if(req.velocity && req.velocityProducts) m.a[kk] = add(b, m.a[kk], velocityProduct(ctx, m, k, t + "_vxvJ"), t + "_a");
     }
   }
   return m;
+}
+
+namespace
+{
+bool sameScalars(const Vec3 & x, const Vec3 & y)
+{
+  for(int i = 0; i < 3; ++i)
+    if(x[i].isConst() != y[i].isConst() || (x[i].isConst() ? x[i].value() != y[i].value() : x[i].name() != y[i].name()))
+      return false;
+  return true;
+}
+} // namespace
+
+bool hasSharedVelocities(PassContext & ctx, const MotionState & m)
+{
+  SharedPasses * shared = ctx.shared();
+  if(!shared || !shared->hasVelocities() || m.v.size() != ctx.model().joints.size() || m.v.empty()) return false;
+  const auto & [vJ, v] = shared->velocities();
+  for(std::size_t k = 0; k < v.size(); ++k)
+    if(!sameScalars(m.v[k].w, v[k].w) || !sameScalars(m.v[k].v, v[k].v) || !sameScalars(m.vJ[k].w, vJ[k].w)
+       || !sameScalars(m.vJ[k].v, vJ[k].v))
+      return false;
+  return true;
+}
+
+Motion velocityProduct(PassContext & ctx, const MotionState & m, int k, const std::string & hint)
+{
+  const auto kk = static_cast<std::size_t>(k);
+  if(!hasSharedVelocities(ctx, m)) return cross(ctx.block(), m.v[kk], m.vJ[kk], hint);
+  ctx.callOnce("[[maybe_unused]] const auto VPs = detail::velocity_products<S>(Vs);");
+  return ctx.shared()->velocityProducts().c[kk];
 }
 
 Xform linkPose(PassContext & ctx, const MotionState & m, int body)

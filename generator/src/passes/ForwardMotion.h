@@ -3,6 +3,7 @@
 //   X_0_k = X_j,k X_T,k X_0_p                        world pose of joint k's body frame
 //   v_k   = X_p_k v_p + S_k alpha_k                  body velocity (body coordinates)
 //   a_k   = X_p_k a_p + S_k alphaD_k + v_k x S_k alpha_k,   a_0 = [0; -g]
+// (over every joint, poses, velocities and v_k x S_k alpha_k come from the header's shared passes)
 // (RBDyn: gravity enters as a fictitious upward acceleration of the world). Inputs that a request
 // leaves out are zero, and the constant folding of codegen/ removes every term they touch.
 
@@ -44,6 +45,14 @@ struct MotionState
 
 /// Run the pass over `joints` (ascending, closed under parents; e.g. ctx.allJoints() or a support path).
 MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const std::vector<int> & joints);
+
+/// True when m's velocities are the header's shared ones (a pass over every joint with velocity in
+/// a body that shares passes): then velocityProducts() holds their products.
+bool hasSharedVelocities(PassContext & ctx, const MotionState & m);
+
+/// c_k = v_k x vJ_k of joint k: read from the shared velocity products when m's velocities are the
+/// shared ones (declaring `VPs` in the body once), else emitted.
+Motion velocityProduct(PassContext & ctx, const MotionState & m, int k, const std::string & hint);
 
 /// The world pose of link `body`: X_0_link = X_owner_link X_0_owner (X0 from a pass with poses).
 Xform linkPose(PassContext & ctx, const MotionState & m, int body);

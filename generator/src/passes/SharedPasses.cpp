@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "BackwardForce.h"
 #include "CompositeInertia.h"
 #include "ForwardMotion.h"
 
@@ -40,6 +41,11 @@ void collect(std::vector<Scalar *> & out, Motion & m)
 {
   collect(out, m.w);
   collect(out, m.v);
+}
+void collect(std::vector<Scalar *> & out, Force & f)
+{
+  collect(out, f.n);
+  collect(out, f.f);
 }
 
 // The block b computed the non-constant scalars *outs: they become the members of
@@ -153,6 +159,30 @@ const std::pair<std::vector<Motion>, std::vector<Motion>> & SharedPasses::veloci
                                     "Joint velocities vJ_k = S_k alpha_k and body velocities v_k = X_p_k v_p + vJ_k (body coordinates)."));
   velocities_ = std::make_pair(std::move(m.vJ), std::move(m.v));
   return *velocities_;
+}
+
+const VelocityProducts & SharedPasses::velocityProducts()
+{
+  if(products_) return *products_;
+  const auto & [vJ, v] = velocities(); // (its definition first: this one takes a JointVelocities)
+  Block b;
+  VelocityProducts vp;
+  for(std::size_t k = 0; k < rm_.joints.size(); ++k)
+  {
+    const MovingJoint & mj = rm_.joints[k];
+    b.comment(fmt::format("{}: c = v x vJ, p = v x* I v", mj.tag));
+    vp.c.push_back(cross(b, v[k], vJ[k], mj.tag + "_vxvJ"));
+    vp.p.push_back(crossDual(b, v[k], apply(b, bodyInertia(mj), v[k], mj.tag + "_Iv"), mj.tag + "_vxIv"));
+  }
+  std::vector<Scalar *> outs;
+  for(Motion & c : vp.c) collect(outs, c);
+  for(Force & p : vp.p) collect(outs, p);
+  definitions_.push_back(exportPass(b, outs, "VelocityProducts", "velocity_products",
+                                    "[[maybe_unused]] const JointVelocities<S> & Vs", "VPs",
+                                    "Velocity products of every joint: c_k = v_k x vJ_k (acceleration bias) and "
+                                    "p_k = v_k x* I_k v_k (force bias)."));
+  products_ = std::move(vp);
+  return *products_;
 }
 
 const std::vector<Inertia> & SharedPasses::compositeInertias()

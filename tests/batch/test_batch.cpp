@@ -22,6 +22,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -398,6 +399,32 @@ TEST_P(Batch, ColumnsLayoutEqualsRows)
   };
   run(r().d, r().widthDouble, 0.0);
   run(r().f, r().widthFloat, 0.0f);
+}
+
+/// Calls with threads > 1 from several user threads at once (the worker pool serves one call at a
+/// time, the others start their own threads): each equals the same call made alone.
+TEST_P(Batch, ConcurrentCallsWithThreads)
+{
+  const BatchFunction<double> & f = r().d.back();
+  const std::size_t N = 100;
+  std::vector<std::vector<std::vector<double>>> inputs;
+  std::vector<Outputs<double>> alone, together;
+  for(unsigned c = 0; c < 4; ++c)
+  {
+    inputs.push_back(States(r(), f.inputs, N, 40 + c).in);
+    alone.emplace_back(f.outputs, N, r().widthDouble);
+    together.emplace_back(f.outputs, N, r().widthDouble);
+    f.batch(constPtrs(inputs[c]).data(), alone[c].ptrs().data(), N, 2, Layout::rows);
+  }
+  std::vector<std::thread> callers;
+  for(std::size_t c = 0; c < 4; ++c)
+    callers.emplace_back([&, c] {
+      for(int k = 0; k < 20; ++k) f.batch(constPtrs(inputs[c]).data(), together[c].ptrs().data(), N, 2 + k % 2, Layout::rows);
+    });
+  for(std::thread & t : callers) t.join();
+  for(std::size_t c = 0; c < 4; ++c)
+    for(std::size_t m = 0; m < f.outputs.size(); ++m)
+      EXPECT_EQ(together[c].out[m], alone[c].out[m]) << r().name << " " << f.name << ", caller " << c << ", output " << m;
 }
 
 TEST_P(Batch, NoHeapAllocation)

@@ -18,7 +18,7 @@ std::vector<Force> inertialForces(PassContext & ctx, const MotionState & m, bool
   Block & b = ctx.block();
   std::vector<Force> f(ctx.model().joints.size(), Force::zero());
   // v x* I v from the header's shared velocity products when m's velocities are the shared ones
-  const bool shared = velocityProducts && joints.size() == ctx.model().joints.size() && hasSharedVelocities(ctx, m);
+  const bool shared = velocityProducts && joints.size() == ctx.model().joints.size() && m.sharedVelocities;
   if(shared) ctx.callOnce("[[maybe_unused]] const auto VPs = detail::velocity_products<S>(Vs);");
   for(int k : joints)
   {

@@ -25,6 +25,7 @@ MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const st
     ctx.callOnce("[[maybe_unused]] const auto Vs = detail::joint_velocities<S>(K, alpha);");
     m.vJ = shared->velocities().first;
     m.v = shared->velocities().second;
+    m.sharedVelocities = true;
   }
   Motion a0 = Motion::zero();
   if(req.gravity)
@@ -57,33 +58,10 @@ MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const st
   return m;
 }
 
-namespace
-{
-bool sameScalars(const Vec3 & x, const Vec3 & y)
-{
-  for(int i = 0; i < 3; ++i)
-    if(x[i].isConst() != y[i].isConst() || (x[i].isConst() ? x[i].value() != y[i].value() : x[i].name() != y[i].name()))
-      return false;
-  return true;
-}
-} // namespace
-
-bool hasSharedVelocities(PassContext & ctx, const MotionState & m)
-{
-  SharedPasses * shared = ctx.shared();
-  if(!shared || !shared->hasVelocities() || m.v.size() != ctx.model().joints.size() || m.v.empty()) return false;
-  const auto & [vJ, v] = shared->velocities();
-  for(std::size_t k = 0; k < v.size(); ++k)
-    if(!sameScalars(m.v[k].w, v[k].w) || !sameScalars(m.v[k].v, v[k].v) || !sameScalars(m.vJ[k].w, vJ[k].w)
-       || !sameScalars(m.vJ[k].v, vJ[k].v))
-      return false;
-  return true;
-}
-
 Motion velocityProduct(PassContext & ctx, const MotionState & m, int k, const std::string & hint)
 {
   const auto kk = static_cast<std::size_t>(k);
-  if(!hasSharedVelocities(ctx, m)) return cross(ctx.block(), m.v[kk], m.vJ[kk], hint);
+  if(!m.sharedVelocities) return cross(ctx.block(), m.v[kk], m.vJ[kk], hint);
   ctx.callOnce("[[maybe_unused]] const auto VPs = detail::velocity_products<S>(Vs);");
   return ctx.shared()->velocityProducts().c[kk];
 }

@@ -41,14 +41,11 @@ struct MotionState
 {
   std::vector<Xform> X0;
   std::vector<Motion> vJ, v, a;
+  bool sharedVelocities = false; ///< vJ, v are the header's shared ones (SharedPasses::velocities())
 };
 
 /// Run the pass over `joints` (ascending, closed under parents; e.g. ctx.allJoints() or a support path).
 MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const std::vector<int> & joints);
-
-/// True when m's velocities are the header's shared ones (a pass over every joint with velocity in
-/// a body that shares passes): then velocityProducts() holds their products.
-bool hasSharedVelocities(PassContext & ctx, const MotionState & m);
 
 /// c_k = v_k x vJ_k of joint k: read from the shared velocity products when m's velocities are the
 /// shared ones (declaring `VPs` in the body once), else emitted.

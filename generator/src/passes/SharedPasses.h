@@ -1,9 +1,10 @@
 #pragma once
 // Passes emitted once per header as detail functions and called by every function that runs them
 // over all joints: the joint kernels, the joints' world poses, the joint velocities, their
-// velocity products (the bias terms of RNEA and ABA) and the composite inertias. Each returns a struct of the pass's non-constant results; the callers'
-// statements read its members, and constant entries still fold at generation time (a struct holds
-// no constant), so the emitted arithmetic is the same as when every function repeated the pass.
+// velocity products (the bias terms of RNEA and ABA) and the composite inertias. Each returns a
+// struct of the pass's non-constant results; the callers' statements read its members, and
+// constant entries still fold at generation time (a struct holds no constant), so the emitted
+// arithmetic is the same as when every function repeated the pass.
 
 #include <memory>
 #include <optional>
@@ -35,8 +36,6 @@ public:
   const std::vector<Xform> & poses();
   /// vJ_k = S_k alpha_k and v_k of every joint, entries read from `Vs` (`detail::joint_velocities<S>(K, alpha)`).
   const std::pair<std::vector<Motion>, std::vector<Motion>> & velocities();
-  /// Whether velocities() has been emitted (asking does not emit it).
-  bool hasVelocities() const { return velocities_.has_value(); }
   /// c_k and p_k of every joint at velocities(), entries read from `VPs` (`detail::velocity_products<S>(Vs)`).
   const VelocityProducts & velocityProducts();
   /// Composite inertia of every joint's subtree, entries read from `Ics` (`detail::composite_inertias<S>(K)`).

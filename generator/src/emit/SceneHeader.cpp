@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -12,6 +13,7 @@
 #include <rbd/scene/Integrators.h>
 
 #include "../passes/JointKernels.h"
+#include "../passes/SharedPasses.h"
 #include "MimicCoupled.h"
 #include "StepDerivatives.h"
 #include "Template.h"
@@ -339,6 +341,9 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
   v.erase("nframes");                // not shown by the scene header
   v["has_forward_dynamics"] = fd ? "true" : "false";
   v["initial_state"] = initialStateLines(scene, sr, rm);
+  // From here on, the passes that run over all joints are emitted once (detail::) and called.
+  auto shared = std::make_unique<passes::SharedPasses>(rm);
+  auto sharing = std::make_unique<passes::SharedPasses::Scope>(*shared);
   v["wrench_param"] = wrenches ? ", [[maybe_unused]] const Wrenches<S> & wrenches" : "";
   if(gravity) v["gravity"] = fmt::format("{:.17g}, {:.17g}, {:.17g}", (*fx.gravity)[0], (*fx.gravity)[1], (*fx.gravity)[2]);
   if(wrenches)
@@ -418,6 +423,8 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
     if(fd) v["step_derivatives"] = sceneStepDerivatives(rm, scene.integrator, wrenches, J.normalize);
   }
   v["outputs"] = outputs(rm, scene, fx);
+  v["shared_passes"] = shared->definitions();
+  sharing.reset(); // the coupled API below calls independent::
   std::string header = fill("scene_dynamics.hpp.in", flags, v);
   if(!coupled) return header;
 
@@ -437,7 +444,8 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
   flags["planar"] = Jc.planar;
   for(const char * k : {"body_enum", "body_names", "equation_doc", "detail_lanes", "detail_sincos", "detail_opaque",
                         "no_forward_dynamics_note", "fn_forward_dynamics", "fn_forward_dynamics_derivatives",
-                        "step_derivatives", "integrate", "configuration_derivative", "normalize_quaternions", "fd_doc"})
+                        "step_derivatives", "integrate", "configuration_derivative", "normalize_quaternions", "fd_doc",
+                        "shared_passes"})
     v.erase(k);
   std::string list;
   for(const std::string & m : coupling.coupled) list += "\n//   " + m;

@@ -229,6 +229,7 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   v["shared_passes"] = shared.definitions();
   v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
   v["detail_lanes"] = templateText("detail_lanes.hpp.in"); // detail::Lanes<S> (one state, or a pack: batch.hpp)
+  v["detail_inline"] = templateText("detail_inline.hpp.in"); // RBDGEN_INLINE (the shared passes)
   if(derivatives) v["detail_opaque"] = templateText("detail_opaque.hpp.in"); // detail::opaque (derivatives)
   const std::string text = selectSections(templateText("dynamics.hpp.in"),
                                           {{"forward_dynamics", fd},

@@ -336,6 +336,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
   v["namespace"] = coupled ? ns + "::independent" : ns;
   v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
   v["detail_lanes"] = templateText("detail_lanes.hpp.in"); // detail::Lanes<S> (one state, or a pack: batch.hpp)
+  v["detail_inline"] = templateText("detail_inline.hpp.in"); // RBDGEN_INLINE (the shared passes)
   if(scene.outputs.derivatives) v["detail_opaque"] = templateText("detail_opaque.hpp.in"); // detail::opaque (derivatives)
   v.merge(robotTemplateValues(rm)); // nq, nv, nbodies, Body enum, names
   v.erase("nframes");                // not shown by the scene header
@@ -445,7 +446,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
   for(const char * k : {"body_enum", "body_names", "equation_doc", "detail_lanes", "detail_sincos", "detail_opaque",
                         "no_forward_dynamics_note", "fn_forward_dynamics", "fn_forward_dynamics_derivatives",
                         "step_derivatives", "integrate", "configuration_derivative", "normalize_quaternions", "fd_doc",
-                        "shared_passes"})
+                        "shared_passes", "detail_inline"})
     v.erase(k);
   std::string list;
   for(const std::string & m : coupling.coupled) list += "\n//   " + m;

@@ -5,7 +5,7 @@
 #                           [NAMESPACE panda] [FLOATING_BASE] [BASE_LINK link] [OUTPUT_DIR dir] [STRICT]
 #                           [DERIVATIVES] [INDEPENDENT_MIMIC] [INSTANTIATE] [BATCH] [PYTHON_MODULE module])
 #   generate_robot_dynamics(TARGET quadruped_sim SCENE scenes/quadruped_ground.xml
-#                           [NAMESPACE ns] [OUTPUT_DIR dir] [STRICT])
+#                           [NAMESPACE ns] [OUTPUT_DIR dir] [STRICT] [DERIVATIVES] [BATCH] [PYTHON_MODULE module])
 #   target_link_libraries(my_controller PRIVATE panda_dynamics)
 #   // #include <panda/dynamics.hpp>
 #
@@ -28,11 +28,13 @@
 # dynamics_float.cpp, every function instantiated there for double and float and declared
 # `extern template` in the header, so that the robot's code is compiled once rather than in every
 # translation unit that includes the header.
-# BATCH (URDF only): also <OUTPUT_DIR>/<NAMESPACE>/batch.hpp, the functions over N states at a time on
-# xsimd packs and threads (rbdgen generate --batch); TARGET then carries xsimd's include directory
-# (Debian: libxsimd-dev; the header only, its CMake package is not used) and Threads::Threads.
+# BATCH: also <OUTPUT_DIR>/<NAMESPACE>/batch.hpp, the functions over N states at a time on
+# xsimd packs and threads (rbdgen generate --batch; with SCENE, the scene's functions, and the scene
+# header gets forward_kinematics, jacobian and center_of_mass); TARGET then carries xsimd's include
+# directory (Debian: libxsimd-dev; the header only, its CMake package is not used) and Threads::Threads.
+# With SCENE, DERIVATIVES adds the scene's <derivatives/> output.
 #
-# PYTHON_MODULE module (URDF only): also a pybind11 module target `module` (`import module`;
+# PYTHON_MODULE module: also a pybind11 module target `module` (`import module`;
 # module.robot() is the object of rbdgen.compile: the API of rbdgen.Robot, with the derivatives when
 # DERIVATIVES is given; implies BATCH: batches run on NS/batch.hpp), built from the Python package's
 # module template and headers (installed by rbdgen's component `python`). Needs pybind11, found by the caller first:
@@ -68,13 +70,6 @@ function(generate_robot_dynamics)
     message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): SCENE names the URDF and the base: "
                         "URDF, FLOATING_BASE and BASE_LINK cannot be given with it")
   endif()
-  if(arg_SCENE AND arg_BATCH)
-    message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): BATCH takes a URDF (scene headers have no batch API yet)")
-  endif()
-  if(arg_SCENE AND arg_PYTHON_MODULE)
-    message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): PYTHON_MODULE takes a URDF (a scene's header has "
-                        "another API; rbdgen.Robot.from_scene evaluates scenes from Python)")
-  endif()
   if(arg_PYTHON_MODULE)
     set(arg_BATCH ON) # the module evaluates batches with NS/batch.hpp
   endif()
@@ -88,11 +83,13 @@ function(generate_robot_dynamics)
     message(FATAL_ERROR "generate_robot_dynamics(${arg_TARGET}): '${input}' does not exist")
   endif()
   set(robot_name "")
-  if(NOT arg_SCENE)
-    file(READ "${urdf}" text)
-    if(text MATCHES "<robot[^>]*name=\"([^\"]*)\"")
-      set(robot_name "${CMAKE_MATCH_1}")
-    endif()
+  file(READ "${input}" text)
+  if(NOT arg_SCENE AND text MATCHES "<robot[^>]*name=\"([^\"]*)\"")
+    set(robot_name "${CMAKE_MATCH_1}")
+  elseif(arg_SCENE AND text MATCHES "<scene[^>]*name=\"([^\"]*)\"")
+    set(robot_name "${CMAKE_MATCH_1}") # (the name rbdgen.Robot.from_scene gives)
+  elseif(arg_SCENE)
+    set(robot_name "${arg_TARGET}")
   endif()
   if(arg_NAMESPACE)
     set(ns "${arg_NAMESPACE}")
@@ -150,7 +147,7 @@ function(generate_robot_dynamics)
   if(arg_SCENE)
     # The scene names its URDF: rbdgen lists both in a depfile (Ninja and Makefile generators).
     set(depfile "${outdir}/${ns}/dynamics.hpp.d")
-    add_custom_command(OUTPUT "${header}"
+    add_custom_command(OUTPUT ${outputs}
       COMMAND ${tool} generate --scene "${input}" ${options} --depfile "${depfile}"
       DEPENDS "${input}" ${tool}
       DEPFILE "${depfile}"

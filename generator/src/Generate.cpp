@@ -83,13 +83,16 @@ std::string checkedNamespace(const std::string & wanted, const std::string & fal
 
 std::vector<GeneratedFile> generateScene(const GenerateOptions & opt, std::vector<std::string> * inputs)
 {
-  if(opt.batch) throw std::invalid_argument(opt.scene + ": --batch takes a URDF (scene headers have no batch API yet)");
   if(!opt.urdf.empty())
     throw std::invalid_argument(opt.scene + ": give either a URDF or --scene (the scene names its URDF), not both");
   if(opt.floatingBase || !opt.baseLink.empty())
     throw std::invalid_argument(opt.scene + ": --floating-base and --base-link come from the scene with --scene");
   if(opt.instantiate) throw std::invalid_argument(opt.scene + ": --instantiate takes a URDF (not a scene)");
-  const rbd::scene::Scene scene = rbd::scene::loadScene(opt.scene);
+  rbd::scene::Scene scene = rbd::scene::loadScene(opt.scene);
+  // --derivatives adds the scene's <derivatives/>; --batch its <kinematics/> (the batch API's
+  // forward_kinematics, jacobian and center_of_mass)
+  scene.outputs.derivatives = scene.outputs.derivatives || opt.derivatives;
+  scene.outputs.kinematics = scene.outputs.kinematics || opt.batch;
   const rbd::scene::SceneRobot sr = rbd::scene::loadSceneRobot(scene);
   const RobotModel rm = robotModelFromUrdf(sr.robot);
   const std::string ns = checkedNamespace(opt.ns, scene.name.empty() ? sr.robot.name : scene.name);
@@ -120,11 +123,25 @@ std::vector<GeneratedFile> generateScene(const GenerateOptions & opt, std::vecto
                    scene.floatingBase ? "floating base" : "fixed base",
                    scene.baseLink.empty() ? "" : ", base link " + scene.baseLink);
   p += fmt::format("// Effects: {}.\n", emit::describeEffects(scene, fx));
-  if(opt.independentMimic) p += "// Options: independent mimic joints.\n";
+  const std::string options = fmt::format("{}{}{}", opt.derivatives ? ", derivatives" : "", opt.batch ? ", batch" : "",
+                                          opt.independentMimic ? ", independent mimic joints" : "");
+  if(!options.empty()) p += fmt::format("// Options: {}.\n", options.substr(2));
   p += fmt::format("// Robot '{}': nq = {}, nv = {}, {} links, {} moving bodies, total mass {:.6g} kg.", rm.name, rm.nq, rm.nv,
                    rm.bodies.size(), rm.joints.size(), rm.totalMass);
   if(inputs) *inputs = {fs::absolute(opt.scene).lexically_normal().string(), fs::absolute(scene.urdf).lexically_normal().string()};
-  return {GeneratedFile{ns + "/dynamics.hpp", emit::emitSceneHeader(rm, scene, sr, ns, p, coupling)}};
+  std::vector<GeneratedFile> files{GeneratedFile{ns + "/dynamics.hpp", emit::emitSceneHeader(rm, scene, sr, ns, p, coupling)}};
+  if(opt.batch)
+  {
+    BatchFunctions bf;
+    bf.forwardDynamics = coupling.empty() ? emit::unregularisedMasslessJoints(rm, fx).empty()
+                                          : emit::coupledSceneForwardDynamics(rm, fx, coupling);
+    bf.derivatives = scene.outputs.derivatives;
+    bf.gravityTorques = fx.gravity.has_value();
+    bf.nonlinearEffects = fx.gravity.has_value() || fx.velocityTerms;
+    bf.wrenches = !fx.wrenchBodies.empty();
+    files.push_back(GeneratedFile{ns + "/batch.hpp", emitBatchHeader(ns, coupling.empty() ? ns : ns + "::independent", p, bf)});
+  }
+  return files;
 }
 
 } // namespace
@@ -206,17 +223,6 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   v["fn_jacobian_q_point"] = emit::jacobianFromConfigBody(rm, true).text;
   v["fn_jacobian_dot_times_alpha_q"] = emit::jacobianDotTimesAlphaFromConfigBody(rm).text;
   v["support_tables"] = passes::supportPathTables(rm);
-  {
-    std::string begin, count;
-    for(const MovingJoint & mj : rm.joints)
-    {
-      begin += fmt::format("{}{}", begin.empty() ? "" : ", ", mj.vIndex);
-      count += fmt::format("{}{}", count.empty() ? "" : ", ", mj.nv);
-    }
-    v["njoint_slots"] = std::to_string(std::max<std::size_t>(rm.joints.size(), 1));
-    v["dof_begin"] = begin.empty() ? "0" : begin;
-    v["dof_count"] = count.empty() ? "0" : count;
-  }
   v["fn_center_of_mass"] = emit::centerOfMassBody(rm).text;
   v["fn_center_of_mass_q"] = emit::centerOfMassFromConfigBody(rm).text;
   v["fn_body_velocities"] = emit::bodyVelocitiesBody(rm).text;
@@ -291,23 +297,34 @@ std::vector<GeneratedFile> generateFiles(const GenerateOptions & opt, std::vecto
     p += fmt::format("// Source: {} (sha256 {})\n", source, hash);
     p += fmt::format("// Options: {}, batch", options);
     const std::string codeNs = coupling.empty() ? ns : ns + "::independent";
-    files.push_back(GeneratedFile{ns + "/batch.hpp", emitBatchHeader(ns, codeNs, p, fd, opt.derivatives)});
+    BatchFunctions bf;
+    bf.forwardDynamics = fd;
+    bf.derivatives = opt.derivatives;
+    files.push_back(GeneratedFile{ns + "/batch.hpp", emitBatchHeader(ns, codeNs, p, bf)});
   }
   return files;
 }
 
 std::string emitBatchHeader(const std::string & ns, const std::string & codeNamespace, const std::string & provenance,
-                            bool forwardDynamics, bool derivatives)
+                            const BatchFunctions & f)
 {
   const std::string text = selectSections(templateText("batch.hpp.in"),
-                                          {{"forward_dynamics", forwardDynamics}, {"derivatives", derivatives}},
+                                          {{"forward_dynamics", f.forwardDynamics},
+                                           {"derivatives", f.derivatives},
+                                           {"gravity", f.gravityTorques},
+                                           {"bias", f.nonlinearEffects},
+                                           {"wrenches", f.wrenches}},
                                           "templates/batch.hpp.in");
-  return fillTemplate(text,
-                      {{"provenance", provenance},
-                       {"namespace", ns},
-                       {"code_namespace", codeNamespace},
-                       {"batch_support", templateText("batch_support.hpp.in")}},
-                      "templates/batch.hpp.in");
+  return fillTemplate(
+      text,
+      {{"provenance", provenance},
+       {"namespace", ns},
+       {"code_namespace", codeNamespace},
+       {"batch_support", templateText("batch_support.hpp.in")},
+       {"wrench_param", f.wrenches ? ", const T * wrenches" : ""},
+       {"wrench_load", f.wrenches ? ", load_wrenches<P>(s, wrenches)" : ""},
+       {"wrench_doc", f.wrenches ? "\n/// wrenches: N x nwrenches x 6 (load_wrenches), nullptr for none." : ""}},
+      "templates/batch.hpp.in");
 }
 
 std::string depfileText(const std::string & target, const std::vector<std::string> & inputs)

@@ -63,11 +63,21 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
                        const std::string & sourceHash, const std::string & options, bool derivatives = false,
                        const rbd::parsers::MimicCoupling & coupling = {});
 
-/// The batch header NS/batch.hpp (templates/batch.hpp.in) over the header of the same robot:
-/// provenance is its first comment lines; forwardDynamics and derivatives say which functions it has;
-/// codeNamespace holds the emitted code (ns, or ns::independent when mimic joints are coupled).
+/// Which functions the header under a batch header has (a plain header: all but the wrenches).
+struct BatchFunctions
+{
+  bool forwardDynamics = true;
+  bool derivatives = false;
+  bool gravityTorques = true;   ///< gravity_torques (a scene without gravity has none)
+  bool nonlinearEffects = true; ///< nonlinear_effects (a scene without gravity and velocity terms has none)
+  bool wrenches = false;        ///< a scene's external wrenches: an argument of ID, FD and their derivatives
+};
+
+/// The batch header NS/batch.hpp (templates/batch.hpp.in) over the header of the same robot or scene:
+/// provenance is its first comment lines; codeNamespace holds the emitted code (ns, or ns::independent
+/// when mimic joints are coupled).
 std::string emitBatchHeader(const std::string & ns, const std::string & codeNamespace, const std::string & provenance,
-                            bool forwardDynamics, bool derivatives);
+                            const BatchFunctions & functions);
 
 /// Write files under outDir: each goes to a temporary file first and is renamed into place only
 /// once all were written; a file whose content did not change is left untouched (mtime kept).

@@ -80,16 +80,18 @@ def _is_scene(data):
     return False
 
 
-def module_source(template, module, namespace, robot_name, has_fd, has_derivatives):
+def module_source(template, module, namespace, robot_name, has_fd, has_derivatives, wrenches=False):
     """The module's C++ source from module_template.cpp's text (cmake/RbdgenPythonModule.cmake does the same)."""
     return (template.replace("@MODULE@", module).replace("@NS@", namespace)
             .replace("@ROBOT_STRING@", _cxx_string(robot_name))
-            .replace("@HAS_FD@", "1" if has_fd else "0").replace("@HAS_DERIVATIVES@", "1" if has_derivatives else "0"))
+            .replace("@HAS_FD@", "1" if has_fd else "0").replace("@HAS_DERIVATIVES@", "1" if has_derivatives else "0")
+            .replace("@WRENCHES@", "1" if wrenches else "0"))
 
 
-def _key(data, floating_base, base_link, cxx, derivatives=True):
+def _key(data, floating_base, base_link, cxx, derivatives=True, scene_urdf=None):
     h = hashlib.sha256()
     parts = [b"rbdgen", _core.__version__.encode(), data,
+             b"scene robot: " + (Path(scene_urdf).read_bytes() if scene_urdf is not None else b""),
              repr((bool(floating_base), base_link or "", bool(derivatives))).encode(),
              _TEMPLATE.read_bytes()]
     parts += [(_INCLUDE_DIR / "rbdgen_py" / name).read_bytes() for name in _HEADERS]
@@ -101,19 +103,20 @@ def _key(data, floating_base, base_link, cxx, derivatives=True):
     return h.hexdigest()
 
 
-def _build(path, floating_base, base_link, derivatives, name, robot_name, cxx, final_dir, verbose):
+def _build(path, floating_base, base_link, derivatives, name, robot_name, cxx, final_dir, verbose, scene=False):
     """Generate, write and compile into a temporary directory, then move it to final_dir."""
     final_dir.parent.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix=name + ".tmp-", dir=final_dir.parent))
     try:
-        files = _core._generate_headers(path, floating_base, base_link or "", name, derivatives, batch=True)
+        files = _core._generate_headers(path, floating_base, base_link or "", name, derivatives, batch=True, scene=scene)
         for f in files:  # NS/dynamics.hpp, NS/batch.hpp (batches run on SIMD packs)
             (work / f["path"]).parent.mkdir(parents=True, exist_ok=True)
             (work / f["path"]).write_bytes(f["content"])
         header = files[0]
         has_fd = b"constexpr bool has_forward_dynamics = true;" in header["content"]
         has_derivatives = b"constexpr bool has_derivatives = true;" in header["content"]
-        source = module_source(_TEMPLATE.read_text(), name, name, robot_name, has_fd, has_derivatives)
+        wrenches = b"constexpr int nwrenches = " in header["content"]  # a scene's external wrenches (held at zero)
+        source = module_source(_TEMPLATE.read_text(), name, name, robot_name, has_fd, has_derivatives, wrenches)
         (work / "module.cpp").write_text(source)
         so_name = name + _EXT_SUFFIX
         includes = [str(work), str(_INCLUDE_DIR)] + _config.EIGEN_INCLUDE.split(";") + \
@@ -146,25 +149,30 @@ def module_of(robot):
 
 
 def compile(path, floating_base=False, base_link=None, *, derivatives=True, cache=None, cxx=None, verbose=False):
-    """The robot of a URDF, evaluated by its generated C++ (same API as rbdgen.Robot).
+    """The robot of a URDF or a scene, evaluated by its generated C++ (same API as rbdgen.Robot).
 
     The first call generates the header (rbdgen's generator), writes a pybind11 module around it,
     compiles it with the system C++ compiler (``$RBDGEN_CXX``, else the one rbdgen was built with;
     flags ``-O2 -march=native``) and imports it; the result is cached in ``cache`` (default
     ``cache_dir()``) under the sha256 of the inputs and rbdgen's version, so the next call with the
     same inputs only imports it. ``derivatives``: also generate inverse_dynamics_derivatives and
-    forward_dynamics_derivatives (default; False compiles faster and the two raise RuntimeError). Raises FileNotFoundError (no such URDF), ValueError (a broken URDF,
-    or a scene file: scenes are evaluated by ``rbdgen.Robot.from_scene``), RuntimeError (the
+    forward_dynamics_derivatives (default; False compiles faster and the two raise RuntimeError).
+    A scene file (docs/SCENES.md) gives the scene's dynamics (its gravity, damping, friction,
+    armature, contacts; external wrenches held at zero), as ``rbdgen.Robot.from_scene`` does; its
+    URDF and base come from the scene (``floating_base`` and ``base_link`` are errors then).
+    Raises FileNotFoundError (no such file), ValueError (a broken URDF or scene), RuntimeError (the
     compiler failed; the message holds its errors and the command).
     """
     path = os.fspath(path)
     with open(path, "rb") as f:
         data = f.read()
-    if _is_scene(data):
-        raise ValueError("rbdgen.compile: %s is a scene file; compile takes a URDF (use rbdgen.Robot.from_scene "
-                         "for a scene's dynamics)" % path)
+    scene = _is_scene(data)
+    if scene and (floating_base or base_link):
+        raise ValueError("rbdgen.compile: %s is a scene file: its base comes from the scene (floating_base and "
+                         "base_link cannot be given)" % path)
+    scene_urdf = _core._scene_urdf(path) if scene else None  # (a broken scene raises ValueError here)
     cxx = cxx or _compiler()
-    key = _key(data, floating_base, base_link, cxx, derivatives)
+    key = _key(data, floating_base, base_link, cxx, derivatives, scene_urdf)
     name = "rbdgen_robot_" + key[:24]
     final_dir = Path(cache) if cache is not None else cache_dir()
     final_dir = final_dir / name
@@ -175,9 +183,9 @@ def compile(path, floating_base=False, base_link=None, *, derivatives=True, cach
         module = _loaded.get(name)
         if module is None:
             if not so.exists():
-                # the runtime checks the URDF (one-line errors) and gives the robot's name
-                robot_name = _core.Robot.from_urdf(path, floating_base, base_link).name
-                _build(path, floating_base, base_link, derivatives, name, robot_name, cxx, final_dir, verbose)
+                # the runtime checks the URDF or scene (one-line errors) and gives the robot's name
+                robot_name = (_core.Robot.from_scene(path) if scene else _core.Robot.from_urdf(path, floating_base, base_link)).name
+                _build(path, floating_base, base_link, derivatives, name, robot_name, cxx, final_dir, verbose, scene)
             spec = importlib.util.spec_from_file_location(name, so)
             module = importlib.util.module_from_spec(spec)
             spec.loader.exec_module(module)

@@ -2,7 +2,8 @@
 // generate_robot_dynamics(... PYTHON_MODULE name) (cmake/RbdgenPythonModule.cmake), which replace
 // these words between @ signs: MODULE (the module name), NS (the namespace of the generated header
 // NS/dynamics.hpp), ROBOT_STRING (the robot's name as a C++ string literal), HAS_FD and
-// HAS_DERIVATIVES (0 or 1: whether the header has forward_dynamics, and the derivatives).
+// HAS_DERIVATIVES (0 or 1: whether the header has forward_dynamics, and the derivatives) and
+// WRENCHES (1 for a scene with external wrenches: held at zero here, as rbdgen.Robot.from_scene does).
 // The class is the one of rbdgen.Robot (rbdgen_py/bind.hpp), on the generated functions: a single
 // state by the single-state function, the states of a batch by the batch API NS/batch.hpp (SIMD
 // packs of the native width; bind.hpp hands over blocks of consecutive states, on its threads).
@@ -20,6 +21,21 @@ template<int R, int C>
 using RowMajorMap = Eigen::Map<Eigen::Matrix<double, R, C, (C == 1 && R != 1) ? Eigen::ColMajor : Eigen::RowMajor>>;
 using Q = g::Config<double>;
 using V = g::Tangent<double>;
+
+#if @WRENCHES@
+/// The scene's external wrenches, zero: the last argument of ID, FD and their derivatives.
+inline g::Wrenches<double> noWrenches()
+{
+  g::Wrenches<double> w;
+  for(auto & x : w) x.setZero();
+  return w;
+}
+#define RBDGEN_PY_WRENCHES , noWrenches()
+#define RBDGEN_PY_BATCH_WRENCHES , nullptr
+#else
+#define RBDGEN_PY_WRENCHES
+#define RBDGEN_PY_BATCH_WRENCHES
+#endif
 
 struct GeneratedModel
 {
@@ -53,9 +69,9 @@ struct GeneratedModel
   }
   void inverseDynamics(Workspace &, const double * q, const double * v, const double * a, double * tau, std::ptrdiff_t n) const
   {
-    if(n > 0) return g::batch::inverse_dynamics<double>(q, v, a, tau, static_cast<std::size_t>(n));
+    if(n > 0) return g::batch::inverse_dynamics<double>(q, v, a RBDGEN_PY_BATCH_WRENCHES, tau, static_cast<std::size_t>(n));
     Eigen::Map<V>{tau} = g::inverse_dynamics<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
-                                                      V(Eigen::Map<const V>(a)));
+                                                      V(Eigen::Map<const V>(a)) RBDGEN_PY_WRENCHES);
   }
   void massMatrix(Workspace &, const double * q, double * H, std::ptrdiff_t n) const
   {
@@ -67,9 +83,9 @@ struct GeneratedModel
                        [[maybe_unused]] double * a, [[maybe_unused]] std::ptrdiff_t n) const
   {
 #if @HAS_FD@
-    if(n > 0) return g::batch::forward_dynamics<double>(q, v, tau, a, static_cast<std::size_t>(n));
+    if(n > 0) return g::batch::forward_dynamics<double>(q, v, tau RBDGEN_PY_BATCH_WRENCHES, a, static_cast<std::size_t>(n));
     Eigen::Map<V>{a} = g::forward_dynamics<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
-                                                    V(Eigen::Map<const V>(tau)));
+                                                    V(Eigen::Map<const V>(tau)) RBDGEN_PY_WRENCHES);
 #endif
   }
   void jacobian(Workspace &, int body, const double * q, double * J, std::ptrdiff_t n) const
@@ -91,9 +107,11 @@ struct GeneratedModel
                                   [[maybe_unused]] std::ptrdiff_t n) const
   {
 #if @HAS_DERIVATIVES@
-    if(n > 0) return g::batch::inverse_dynamics_derivatives<double>(q, v, a, dtauDq, dtauDv, static_cast<std::size_t>(n));
+    if(n > 0)
+      return g::batch::inverse_dynamics_derivatives<double>(q, v, a RBDGEN_PY_BATCH_WRENCHES, dtauDq, dtauDv,
+                                                            static_cast<std::size_t>(n));
     const auto d = g::inverse_dynamics_derivatives<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
-                                                           V(Eigen::Map<const V>(a)));
+                                                           V(Eigen::Map<const V>(a)) RBDGEN_PY_WRENCHES);
     RowMajorMap<g::nv, g::nv>{dtauDq} = d.dtau_dq;
     RowMajorMap<g::nv, g::nv>{dtauDv} = d.dtau_dalpha;
 #endif
@@ -106,9 +124,10 @@ struct GeneratedModel
   {
 #if @HAS_DERIVATIVES@ && @HAS_FD@
     if(n > 0)
-      return g::batch::forward_dynamics_derivatives<double>(q, v, tau, a, daDq, daDv, Minv, static_cast<std::size_t>(n));
+      return g::batch::forward_dynamics_derivatives<double>(q, v, tau RBDGEN_PY_BATCH_WRENCHES, a, daDq, daDv, Minv,
+                                                            static_cast<std::size_t>(n));
     const auto d = g::forward_dynamics_derivatives<double>(Q(Eigen::Map<const Q>(q)), V(Eigen::Map<const V>(v)),
-                                                           V(Eigen::Map<const V>(tau)));
+                                                           V(Eigen::Map<const V>(tau)) RBDGEN_PY_WRENCHES);
     Eigen::Map<V>{a} = d.alphaD;
     RowMajorMap<g::nv, g::nv>{daDq} = d.dalphaD_dq;
     RowMajorMap<g::nv, g::nv>{daDv} = d.dalphaD_dalpha;

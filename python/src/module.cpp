@@ -25,13 +25,13 @@ std::string fspath(const py::object & path)
   return py::str(py::module_::import("os").attr("fspath")(path)).cast<std::string>();
 }
 
-/// The headers generated for a URDF (nothing written), NS/dynamics.hpp and, with batch, NS/batch.hpp:
-/// rbdgen.compile's input.
+/// The headers generated for a URDF or a scene (nothing written), NS/dynamics.hpp and, with batch,
+/// NS/batch.hpp: rbdgen.compile's input.
 py::list generateHeaders(const py::object & path, bool floatingBase, const std::string & baseLink, const std::string & ns,
-                         bool derivatives, bool batch)
+                         bool derivatives, bool batch, bool scene)
 {
   rbdgen::GenerateOptions opt;
-  opt.urdf = fspath(path);
+  (scene ? opt.scene : opt.urdf) = fspath(path);
   opt.floatingBase = floatingBase;
   opt.baseLink = baseLink;
   opt.ns = ns;
@@ -99,6 +99,10 @@ PYBIND11_MODULE(_core, m)
           "and ground contacts (no external wrench). A broken scene raises ValueError.");
 
   m.def("_generate_headers", &generateHeaders, py::arg("path"), py::arg("floating_base"), py::arg("base_link"),
-        py::arg("namespace"), py::arg("derivatives") = false, py::arg("batch") = false,
-        "The generated headers of a URDF, in memory: [dict(path=relative path, content=bytes)], dynamics.hpp first.");
+        py::arg("namespace"), py::arg("derivatives") = false, py::arg("batch") = false, py::arg("scene") = false,
+        "The generated headers of a URDF (or a scene), in memory: [dict(path=relative path, content=bytes)], "
+        "dynamics.hpp first.");
+  m.def(
+      "_scene_urdf", [](const py::object & path) { return rbd::scene::loadScene(fspath(path)).urdf; }, py::arg("path"),
+      "The path of the URDF a scene file names (a broken scene raises ValueError).");
 }

@@ -166,7 +166,7 @@ void readExternalWrench(Context & cx, const XMLElement * e, Scene & s)
 void readOutputs(Context & cx, const XMLElement * e, Scene & s)
 {
   cx.rd.onlyAttributes(e, "", {});
-  cx.rd.onlyChildren(e, "", {"pose", "jacobian", "com", "momentum", "energy", "derivatives"});
+  cx.rd.onlyChildren(e, "", {"pose", "jacobian", "com", "momentum", "energy", "derivatives", "kinematics"});
   for(const XMLElement * c = e->FirstChildElement(); c; c = c->NextSiblingElement())
   {
     const std::string tag = c->Name();
@@ -187,6 +187,7 @@ void readOutputs(Context & cx, const XMLElement * e, Scene & s)
     bool & flag = tag == "com"           ? s.outputs.com
                   : tag == "momentum"    ? s.outputs.momentum
                   : tag == "derivatives" ? s.outputs.derivatives
+                  : tag == "kinematics"  ? s.outputs.kinematics
                                          : s.outputs.energy;
     if(flag) cx.rd.fail(c, "", "output given twice");
     flag = true;

@@ -24,11 +24,13 @@ enum class Layout
 template<class T>
 using BatchFn = void (*)(const T * const * in, T * const * out, std::size_t N, int threads, Layout layout);
 
-/// What an input is: a configuration (nq values) or a tangent vector (nv values).
+/// What an input is: a configuration (nq values), a tangent vector (nv values) or a scene's external
+/// wrenches (nwrenches x 6 values).
 enum class Input
 {
   q,
-  v
+  v,
+  wrenches
 };
 
 /// How an output's error grows, for its bound (test_batch.cpp): kinematics and dynamics are
@@ -70,6 +72,7 @@ struct BatchRobot
   std::vector<BatchFunction<double>> d;
   std::vector<BatchFunction<float>> f;
   StatesFn<double> massMatrix; ///< single-state mass matrix (conditioning of the bounds)
+  int nwrenches = 0;           ///< a scene's external wrenches (Input::wrenches)
 };
 
 } // namespace rbdgentest

@@ -86,7 +86,7 @@ struct Worst
 };
 
 /// Seeded random inputs of N states: q in [-3, 3] (a floating base's quaternion normalised),
-/// v in [-3, 3], in the layout of the batch functions.
+/// v and wrenches in [-3, 3], in the layout of the batch functions.
 struct States
 {
   std::vector<std::vector<double>> in;
@@ -95,7 +95,7 @@ struct States
     rbdtest::Rng rng(seed);
     for(rbdgentest::Input k : kinds)
     {
-      const int n = k == rbdgentest::Input::q ? r.nq : r.nv;
+      const int n = k == rbdgentest::Input::q ? r.nq : k == rbdgentest::Input::v ? r.nv : 6 * r.nwrenches;
       std::vector<double> x(N * static_cast<std::size_t>(n));
       for(double & v : x) v = rbdtest::uniform(rng, -3, 3);
       if(k == rbdgentest::Input::q && r.floatingBase)
@@ -173,7 +173,7 @@ std::vector<T> productBound(const BatchRobot & r, const std::vector<BatchFunctio
     if(std::string(f.name) == "inverse_dynamics_derivatives") id = &f;
   const int nv = r.nv;
   std::vector<T> dq(N * static_cast<std::size_t>(nv * nv)), da(dq.size()), bound(dq.size());
-  const T * idIn[] = {in[0], in[1], out[0]};
+  const T * idIn[] = {in[0], in[1], out[0], in.size() > 3 ? in[3] : nullptr}; // (a scene's wrenches: in[3])
   T * idOut[] = {dq.data(), da.data()};
   id->single(idIn, idOut, N, 1);
   using M = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;

@@ -289,14 +289,33 @@ TEST_F(CliTest, BatchWritesBatchHeaderBesideTheHeader)
   EXPECT_TRUE(readFile(dir() / "again" / "ur5e" / "batch.hpp") == batch);
   ASSERT_EQ(rbdgen({"generate", robot("ur5e").string(), "--out", "deriv", "--batch", "--derivatives"}, dir()).code, 0);
   EXPECT_NE(readFile(dir() / "deriv" / "ur5e" / "batch.hpp").find("void forward_dynamics_derivatives("), std::string::npos);
-  // A scene has no batch API: one line, nothing written.
-  const Result scene = rbdgen({"generate", "--scene", (fs::path(RBDGEN_SOURCE_DIR) / "scenes" / "pendulum_damped.xml").string(),
-                               "--out", "scene", "--batch"},
-                              dir());
-  EXPECT_EQ(scene.code, 1);
-  EXPECT_NE(scene.err.find("--batch takes a URDF"), std::string::npos) << scene.err;
-  EXPECT_EQ(std::count(scene.err.begin(), scene.err.end(), '\n'), 1);
-  EXPECT_FALSE(fs::exists(dir() / "scene"));
+  // A scene: its header gets forward_kinematics, jacobian and center_of_mass (the batch API's), and its
+  // batch header the scene's functions only; --derivatives adds the scene's <derivatives/>.
+  const fs::path pendulum = fs::path(RBDGEN_SOURCE_DIR) / "scenes" / "pendulum_damped.xml";
+  ASSERT_EQ(rbdgen({"generate", "--scene", pendulum.string(), "--out", "scene"}, dir()).code, 0);
+  const Result scene = rbdgen({"generate", "--scene", pendulum.string(), "--out", "scene_batch", "--batch"}, dir());
+  ASSERT_EQ(scene.code, 0) << scene.err;
+  EXPECT_EQ(listTree(dir() / "scene_batch"), (std::vector<std::string>{"pendulum_damped", "pendulum_damped/batch.hpp",
+                                                                       "pendulum_damped/dynamics.hpp"}));
+  const std::string sceneHeader = readFile(dir() / "scene" / "pendulum_damped" / "dynamics.hpp");
+  const std::string sceneBatchHeader = readFile(dir() / "scene_batch" / "pendulum_damped" / "dynamics.hpp");
+  for(const char * fn : {"forward_kinematics(", "jacobian(Body body", "center_of_mass("})
+  {
+    EXPECT_EQ(sceneHeader.find(fn), std::string::npos) << fn; // not asked for by the scene
+    EXPECT_NE(sceneBatchHeader.find(fn), std::string::npos) << fn;
+  }
+  EXPECT_EQ(sceneHeader.find("inverse_dynamics_derivatives("), std::string::npos);
+  const std::string sceneBatch = readFile(dir() / "scene_batch" / "pendulum_damped" / "batch.hpp");
+  EXPECT_NE(sceneBatch.find("// Options: batch."), std::string::npos);
+  EXPECT_NE(sceneBatch.find("void gravity_torques("), std::string::npos); // the scene has gravity
+  EXPECT_EQ(sceneBatch.find("const T * wrenches"), std::string::npos); // no external wrenches in this scene
+  ASSERT_EQ(rbdgen({"generate", "--scene", pendulum.string(), "--out", "scene_deriv", "--derivatives"}, dir()).code, 0);
+  EXPECT_NE(readFile(dir() / "scene_deriv" / "pendulum_damped" / "dynamics.hpp").find("inverse_dynamics_derivatives("),
+            std::string::npos);
+  // without gravity: no gravity_torques, in the header or its batch
+  const fs::path floating = fs::path(RBDGEN_SOURCE_DIR) / "scenes" / "humanoid_zero_gravity.xml";
+  ASSERT_EQ(rbdgen({"generate", "--scene", floating.string(), "--out", "zero_g", "--batch"}, dir()).code, 0);
+  EXPECT_EQ(readFile(dir() / "zero_g" / "humanoid_zero_gravity" / "batch.hpp").find("gravity_torques("), std::string::npos);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,5 +1,6 @@
 """generate_robot_dynamics(... PYTHON_MODULE name) in a downstream CMake build against an installed
-rbdgen: the module imports and equals the runtime, derivatives included (run by ctest's python_tests,
+rbdgen, of a URDF and of a scene: the modules import and equal the runtime (Robot.from_urdf,
+Robot.from_scene), derivatives included (run by ctest's python_tests,
 which says where the build is). The prefix gets rbdgen (libraries, the rbdgen executable, the CMake
 package) from $RBDGEN_TEST_GENERATOR_BUILD when set (scripts/test.sh: its sanitized build, which
 has built the executable anyway; the module links none of its libraries), else from this build,
@@ -38,14 +39,28 @@ def test_python_module_of_a_downstream_build(tmp_path):
     urdf = ROBOTS / "double_pendulum.urdf"
     generator = ["-G", "Ninja"] if shutil.which("ninja") else []
     # no build type: no optimisation, the quickest compile (-O2 and LTO would add ~10 s)
+    scene = HERE.parent / "batch" / "double_pendulum_ground.xml"  # the same robot with every scene effect
     run(["cmake", "-S", HERE / "cmake_module", "-B", build, *generator, "-DCMAKE_BUILD_TYPE=",
-         "-DCMAKE_PREFIX_PATH=%s" % prefix, "-DPython3_EXECUTABLE=%s" % sys.executable, "-DURDF=%s" % urdf])
+         "-DCMAKE_PREFIX_PATH=%s" % prefix, "-DPython3_EXECUTABLE=%s" % sys.executable, "-DURDF=%s" % urdf,
+         "-DSCENE=%s" % scene])
     run(["cmake", "--build", build])
-    so = next(build.glob("my_robot_py*.so"))
-    spec = importlib.util.spec_from_file_location("my_robot_py", so)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    robot = module.robot()
+
+    def load(name):
+        spec = importlib.util.spec_from_file_location(name, next(build.glob(name + "*.so")))
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+        return module.robot()
+
+    # the scene's module (SCENE ... PYTHON_MODULE) = rbdgen.Robot.from_scene, derivatives included
+    scene_robot, scene_runtime = load("my_scene_py"), rbdgen.Robot.from_scene(scene)
+    assert (scene_robot.name, scene_robot.nv, scene_robot.has_derivatives) == ("double_pendulum_ground", 2, True)
+    q, v, a = random_states(scene_runtime, 10, seed=15, floating=False)
+    assert rel_err(scene_robot.inverse_dynamics(q, v, a), scene_runtime.inverse_dynamics(q, v, a)) < 1e-12
+    assert rel_err(scene_robot.forward_dynamics(q, v, a), scene_runtime.forward_dynamics(q, v, a)) < 1e-10
+    for x, y in zip(scene_robot.inverse_dynamics_derivatives(q, v, a), scene_runtime.inverse_dynamics_derivatives(q, v, a)):
+        assert rel_err(x, y) < 1e-12
+
+    robot = load("my_robot_py")
     runtime = rbdgen.Robot.from_urdf(urdf, floating_base=False)
     assert (robot.nq, robot.nv, robot.name) == (runtime.nq, runtime.nv, runtime.name)
     assert robot.dof_names == runtime.dof_names and robot.body_names == runtime.body_names

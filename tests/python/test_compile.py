@@ -1,6 +1,8 @@
 """rbdgen.compile: the generated code, compiled and imported, equals the runtime; the cache makes the
 second call instant. One fixed-base robot with mimic joints (coupled: the runtime and the generated
-module agree on the coupled coordinates) and one floating-base robot (each compile takes seconds)."""
+module agree on the coupled coordinates), one floating-base robot and one scene (every effect:
+damping, friction, armature, a contact, an external wrench held at zero; against
+rbdgen.Robot.from_scene), each compile takes seconds."""
 import os
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -16,7 +18,9 @@ BOUND = 1e-12  # max |generated - runtime| / max(1, max |runtime|), as tests/gen
 
 # tests/generator/mimic_gripper.urdf: 10 joints, 4 mimic joints coupled (a chain, siblings, across subtrees)
 MIMIC_GRIPPER = ROOT / "tests" / "generator" / "mimic_gripper.urdf"
-ROBOTS_COMPILED = [(MIMIC_GRIPPER, False), (ROBOTS / "quadruped.urdf", True)]
+# tests/batch/double_pendulum_ground.xml: the double pendulum with every scene effect (a scene file)
+SCENE = ROOT / "tests" / "batch" / "double_pendulum_ground.xml"
+ROBOTS_COMPILED = [(MIMIC_GRIPPER, False), (ROBOTS / "quadruped.urdf", True), (SCENE, False)]
 
 
 @pytest.fixture(scope="module")
@@ -40,6 +44,8 @@ def first_compiles(cache, heavy_pendulum):
         start = time.perf_counter()
         if urdf == heavy_pendulum:  # (and without derivatives)
             robot = rbdgen.compile(urdf, floating_base=floating, derivatives=False, cache=cache)
+        elif urdf == SCENE:
+            robot = rbdgen.compile(urdf, cache=cache)
         else:
             robot = rbdgen.compile(urdf, floating_base=floating, cache=cache)
         return robot, time.perf_counter() - start
@@ -50,11 +56,11 @@ def first_compiles(cache, heavy_pendulum):
         return {job: f.result() for job, f in futures.items()}
 
 
-@pytest.fixture(scope="module", params=ROBOTS_COMPILED, ids=["mimic_gripper", "quadruped_floating"])
+@pytest.fixture(scope="module", params=ROBOTS_COMPILED, ids=["mimic_gripper", "quadruped_floating", "scene"])
 def pair(request, first_compiles):
     urdf, floating = request.param
     compiled, first = first_compiles[(urdf, floating)]
-    runtime = rbdgen.Robot.from_urdf(urdf, floating_base=floating)
+    runtime = rbdgen.Robot.from_scene(urdf) if urdf == SCENE else rbdgen.Robot.from_urdf(urdf, floating_base=floating)
     return compiled, runtime, floating, first
 
 
@@ -66,7 +72,7 @@ def test_same_robot(pair):
     assert compiled.name == runtime.name
     assert compiled.has_forward_dynamics
     assert compiled.has_derivatives
-    if not floating:  # the gripper: 10 joints, finger_r, knuckle, camera and flap follow others
+    if compiled.name == "mimic_gripper":  # 10 joints, finger_r, knuckle, camera and flap follow others
         assert compiled.nv == 6 and "finger_r_joint" not in compiled.dof_names
 
 
@@ -152,9 +158,9 @@ def test_compiled_batches_run_on_simd_packs(pair, n):
 
 def test_second_call_is_instant(pair, cache):
     compiled, runtime, floating, first = pair
-    urdf = MIMIC_GRIPPER if not floating else ROBOTS / "quadruped.urdf"
+    path = {"mimic_gripper": MIMIC_GRIPPER, "quadruped": ROBOTS / "quadruped.urdf", "double_pendulum_ground": SCENE}[compiled.name]
     start = time.perf_counter()
-    again = rbdgen.compile(urdf, floating_base=floating, cache=cache)
+    again = rbdgen.compile(path, floating_base=floating, cache=cache)
     second = time.perf_counter() - start
     assert second < 0.1 and second < first / 20, (first, second)
     q = np.zeros(runtime.nq)
@@ -170,8 +176,8 @@ def test_cache_is_keyed_by_the_inputs(cache, heavy_pendulum, first_compiles):
     heavy = heavy_pendulum
     compiled = first_compiles[(heavy, False)][0]
     modules = {d.name for d in cache.iterdir() if d.name.startswith("rbdgen_robot_") and ".tmp-" not in d.name}
-    assert len(modules) == 3  # one per robot of first_compiles, nothing left over from the builds
-    assert len({d.name for d in cache.iterdir()}) == 3
+    assert len(modules) == 4  # one per robot of first_compiles, nothing left over from the builds
+    assert len({d.name for d in cache.iterdir()}) == 4
     q = np.array([0.5])
     assert compiled.mass_matrix(q)[0, 0] == pytest.approx(2 + 4e-5, rel=1e-14)
     assert rel_err(compiled.inverse_dynamics(q, q, q), rbdgen.Robot.from_urdf(heavy).inverse_dynamics(q, q, q)) < BOUND
@@ -184,18 +190,42 @@ def test_cache_is_keyed_by_the_inputs(cache, heavy_pendulum, first_compiles):
     assert key == _compile._key(urdf, False, None, "c++")
     others = [_compile._key(urdf.replace(b"1", b"2", 1), False, None, "c++"), _compile._key(urdf, True, None, "c++"),
               _compile._key(urdf, False, "link1", "c++"), _compile._key(urdf, False, None, "clang++"),
-              _compile._key(urdf, False, None, "c++", derivatives=False)]
-    assert len({key, *others}) == 6
+              _compile._key(urdf, False, None, "c++", derivatives=False),
+              # a scene's key holds its URDF's bytes (the scene names it)
+              _compile._key(urdf, False, None, "c++", scene_urdf=ROBOTS / "pendulum.urdf"),
+              _compile._key(urdf, False, None, "c++", scene_urdf=heavy)]
+    assert len({key, *others}) == 8
 
 
 def test_compile_errors(tmp_path, cache):
     with pytest.raises(FileNotFoundError):
         rbdgen.compile(tmp_path / "missing.urdf", cache=cache)
-    with pytest.raises(ValueError, match="scene file"):
-        rbdgen.compile(SCENES / "pendulum_damped.xml", cache=cache)
+    with pytest.raises(ValueError, match="scene file: its base comes from the scene"):
+        rbdgen.compile(SCENES / "pendulum_damped.xml", floating_base=True, cache=cache)
+    broken_scene = tmp_path / "broken_scene.xml"
+    broken_scene.write_text('<scene name="s"><robot urdf="missing.urdf" base="fixed"/></scene>')
+    with pytest.raises(ValueError, match="missing.urdf"):
+        rbdgen.compile(broken_scene, cache=cache)
     broken = tmp_path / "broken.urdf"
     broken.write_text('<robot name="r"><link name="a" mass="x"/><joint name="j" type="revolute"/></robot>')
     with pytest.raises(ValueError, match="broken.urdf"):
         rbdgen.compile(broken, cache=cache)
     with pytest.raises(RuntimeError, match="compiler failed"):
         rbdgen.compile(ROBOTS / "pendulum.urdf", cache=cache, cxx="false")
+
+
+def test_compiled_scene_has_its_effects(first_compiles):
+    """The compiled scene at rest with its tip 0.22 m into the ground: the URDF's gravity torques minus
+    J_tip^T f of the compliant contact (f = k depth upwards, no friction at rest), computed here."""
+    compiled = first_compiles[(SCENE, False)][0]
+    plain = rbdgen.Robot.from_urdf(ROBOTS / "double_pendulum.urdf")
+    q = np.array([0.3, 0.0])
+    zero = np.zeros(2)
+    depth = -1.5 + 1.8 * np.cos(0.3)  # ground at z = -1.5, the tip 1.8 m below the pivot along the links
+    f = np.array([0.0, 0.0, 5000.0 * depth])
+    expected = plain.inverse_dynamics(q, zero, zero) - plain.jacobian("tip", q)[3:].T @ f
+    assert depth > 0.2
+    assert rel_err(compiled.inverse_dynamics(q, zero, zero), expected) < 1e-12
+    # out of the ground: the URDF's gravity torques only
+    q_free = np.array([1.2, 0.0])
+    assert rel_err(compiled.inverse_dynamics(q_free, zero, zero), plain.inverse_dynamics(q_free, zero, zero)) < 1e-12

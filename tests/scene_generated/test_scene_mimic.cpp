@@ -23,6 +23,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include <rbd/EulerIntegration.h>
@@ -195,6 +196,20 @@ TEST(SceneMimic, EveryFunctionIsTheFullModelProjected)
     EXPECT_LT(relErr(ns::pose_camera<double>(q).rotation, full::pose_camera<double>(qf).rotation), 1e-14);
     EXPECT_LT(relErr(ns::pose_knuckle<double>(q).translation, full::pose_knuckle<double>(qf).translation), 1e-14);
     EXPECT_LT(relErr(ns::jacobian_flap<double>(q), full::jacobian_flap<double>(qf) * G), 1e-13);
+    // <kinematics/>: every link's pose and the support-path Jacobian, against the outputs above (other
+    // emitted code: one link's pose, one link's Jacobian), and the Jacobian at a point of the link
+    // (v_p = v + w x (R p), R = the link's axes in world)
+    const auto poses = ns::forward_kinematics<double>(q);
+    EXPECT_LT(relErr(poses[static_cast<std::size_t>(ns::Body::camera)].rotation, full::pose_camera<double>(qf).rotation), 1e-14);
+    EXPECT_LT(relErr(poses[static_cast<std::size_t>(ns::Body::knuckle)].translation, full::pose_knuckle<double>(qf).translation),
+              1e-14);
+    const MatX<double> Jflap = full::jacobian_flap<double>(qf) * G;
+    EXPECT_LT(relErr(ns::jacobian<double>(ns::Body::flap, q), Jflap), 1e-13);
+    const Eigen::Vector3d p(0.03, -0.02, 0.05);
+    const Eigen::Vector3d Rp = full::forward_kinematics<double>(qf)[static_cast<std::size_t>(ns::Body::flap)].rotation.transpose() * p;
+    MatX<double> Jp = Jflap;
+    for(int c = 0; c < ns::nv; ++c) Jp.block<3, 1>(3, c) += Jflap.block<3, 1>(0, c).cross(Rp);
+    EXPECT_LT(relErr(ns::jacobian<double>(ns::Body::flap, q, p), Jp), 1e-13);
     EXPECT_LT(relErr(ns::center_of_mass<double>(q), full::center_of_mass<double>(qf)), 1e-14);
     EXPECT_LT(relErr(ns::centroidal_momentum<double>(q, alpha), full::centroidal_momentum<double>(qf, af)), 1e-13);
     // kinetic energy alpha^T H alpha / 2 with the coupled H (armature included in both)

@@ -14,6 +14,8 @@
 
 #include "../passes/JointKernels.h"
 #include "../passes/SharedPasses.h"
+#include "../passes/SupportPath.h"
+#include "Functions.h"
 #include "MimicCoupled.h"
 #include "StepDerivatives.h"
 #include "Template.h"
@@ -178,8 +180,21 @@ std::string outputs(const RobotModel & rm, const rbd::scene::Scene & scene, cons
                                         : linkJacobianBody(rm, b).text}});
   }
   const bool potential = o.energy && fx.gravity.has_value();
+  const bool com = o.com || o.kinematics; // a robot's kinematics include its centre of mass
   std::map<std::string, std::string> v{{"poses", poses}, {"jacobians", jacobians}};
-  if(o.com)
+  if(o.kinematics && coupled)
+  {
+    v["fn_forward_kinematics"] = fmt::format("  res = independent::forward_kinematics<S>({});", kExpandedQ);
+    v["fn_jacobian_q_point"] =
+        fmt::format("  J = project_columns<S, 6>(independent::jacobian<S>(body, {}, point));", kExpandedQ);
+  }
+  else if(o.kinematics)
+  {
+    v["support_tables"] = passes::supportPathTables(rm);
+    v["fn_forward_kinematics"] = forwardKinematicsBody(rm).text;
+    v["fn_jacobian_q_point"] = jacobianFromConfigBody(rm, true).text;
+  }
+  if(com)
     v["fn_center_of_mass"] = coupled ? fmt::format("  com = independent::center_of_mass<S>({});", kExpandedQ) : centerOfMassQBody(rm).text;
   if(o.momentum)
     v["fn_centroidal_momentum"] =
@@ -195,7 +210,13 @@ std::string outputs(const RobotModel & rm, const rbd::scene::Scene & scene, cons
   if(potential)
     v["fn_potential_energy"] =
         coupled ? fmt::format("  e = independent::potential_energy<S>({});", kExpandedQ) : energyBody(rm, fx, false).text;
-  return fill("scene_outputs.hpp.in", {{"com", o.com}, {"momentum", o.momentum}, {"energy", o.energy}, {"potential", potential}},
+  return fill("scene_outputs.hpp.in",
+              {{"com", com},
+               {"momentum", o.momentum},
+               {"energy", o.energy},
+               {"potential", potential},
+               {"kinematics", o.kinematics},
+               {"own_model", !coupled}},
               v);
 }
 
@@ -341,6 +362,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
   v.merge(robotTemplateValues(rm)); // nq, nv, nbodies, Body enum, names
   v.erase("nframes");                // not shown by the scene header
   v["has_forward_dynamics"] = fd ? "true" : "false";
+  v["has_derivatives"] = scene.outputs.derivatives ? "true" : "false";
   v["initial_state"] = initialStateLines(scene, sr, rm);
   // From here on, the passes that run over all joints are emitted once (detail::) and called.
   auto shared = std::make_unique<passes::SharedPasses>(rm);

@@ -64,15 +64,26 @@ std::string supportPathTables(const RobotModel & rm)
     for(std::size_t i = 0; i < D; ++i) row += fmt::format("{}{}", i ? ", " : "", i < path.size() ? path[i] : 0);
     paths += fmt::format("    {{{{{}}}}}, // {}\n", row, bf.name);
   }
-  for(const MovingJoint & mj : rm.joints) angles += fmt::format("{}{}", angles.empty() ? "" : ", ", hasAngle(mj) ? mj.qIndex : 0);
+  std::string begin, count;
+  for(const MovingJoint & mj : rm.joints)
+  {
+    angles += fmt::format("{}{}", angles.empty() ? "" : ", ", hasAngle(mj) ? mj.qIndex : 0);
+    begin += fmt::format("{}{}", begin.empty() ? "" : ", ", mj.vIndex);
+    count += fmt::format("{}{}", count.empty() ? "" : ", ", mj.nv);
+  }
   if(!paths.empty()) paths.pop_back();
+  const std::size_t slots = std::max<std::size_t>(rm.joints.size(), 1);
   return fmt::format("/// Support paths (moving joints from the root to each link's owner, root first) for the functions\n"
                      "/// that take a Body and q; angle_index: the q index of each moving joint's angle (0: none).\n"
                      "constexpr int max_support_depth = {};\n"
                      "constexpr std::array<int, nbodies> support_depth = {{ {} }};\n"
                      "constexpr std::array<std::array<int, max_support_depth>, nbodies> support_path = {{{{\n{}\n}}}};\n"
-                     "constexpr std::array<int, {}> angle_index = {{ {} }};",
-                     D, depth, paths, std::max<std::size_t>(rm.joints.size(), 1), angles.empty() ? "0" : angles);
+                     "constexpr std::array<int, {}> angle_index = {{ {} }};\n"
+                     "/// First velocity coordinate and number of velocity coordinates of each moving joint.\n"
+                     "constexpr std::array<int, {}> dof_begin = {{ {} }};\n"
+                     "constexpr std::array<int, {}> dof_count = {{ {} }};",
+                     D, depth, paths, slots, angles.empty() ? "0" : angles, slots, begin.empty() ? "0" : begin, slots,
+                     count.empty() ? "0" : count);
 }
 
 void emitJumpWalk(Block & b, const RobotModel & rm, const std::string & prefix,

@@ -17,7 +17,7 @@ namespace rbdgen::passes
 
 /// The constexpr tables of the header's detail namespace that emitPathLoop reads:
 /// support_depth[body], support_path[body][i] (root first), angle_index[joint] (q index of the
-/// joint's angle, 0 when it has none), max_support_depth.
+/// joint's angle, 0 when it has none), max_support_depth, dof_begin[joint] and dof_count[joint] (its velocity coordinates).
 std::string supportPathTables(const RobotModel & rm);
 
 /// Leaf to root from link `body` (a run-time value named `body`):

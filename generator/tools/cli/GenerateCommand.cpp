@@ -37,7 +37,7 @@ Command addGenerateCommand(CLI::App & app)
                                     "a massless link between them (singular), dofs of negligible effective inertia (ill-conditioned)");
   cmd->add_flag("--derivatives", o->derivatives,
                 "also emit inverse_dynamics_derivatives(q, alpha, alphaD) and forward_dynamics_derivatives(q, alpha, tau) "
-                "(d/dq in the tangent space, d/dalpha, M^-1)");
+                "(d/dq in the tangent space, d/dalpha, M^-1); with --scene, as its <derivatives/> output");
   cmd->add_flag("--independent-mimic", o->independentMimic,
                 "mimic joints as independent joints with their own dofs (default: coupled to the joints they follow, "
                 "q = multiplier q_followed + offset, not dofs; the full model is then in NS::independent)");
@@ -46,7 +46,8 @@ Command addGenerateCommand(CLI::App & app)
                 "them extern template in the header: the robot's code is compiled once, in those files (link them)");
   cmd->add_flag("--batch", o->batch,
                 "also write NS/batch.hpp: the functions over N states at a time (row-major N x n arrays) on xsimd packs "
-                "and threads (needs xsimd, libxsimd-dev; URDF only)");
+                "and threads (needs xsimd, libxsimd-dev); with --scene, the scene's functions (and its header gets forward_kinematics, "
+                "jacobian and center_of_mass)");
   cmd->add_option("--depfile", o->depfile, "also write a Makefile-syntax depfile (header: inputs) for the build system");
   return {cmd,
           [o] {

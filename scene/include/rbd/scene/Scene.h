@@ -57,7 +57,8 @@ struct Outputs
   bool com = false;                   ///< centre of mass (world)
   bool momentum = false;              ///< centroidal momentum [angular about CoM; linear]
   bool energy = false;                ///< kinetic + potential energy
-  bool derivatives = false;           ///< inverse/forward dynamics derivatives (no contacts yet)
+  bool derivatives = false;           ///< inverse/forward dynamics derivatives (contacts included)
+  bool kinematics = false;            ///< forward_kinematics of every link, jacobian(body, q), center_of_mass
 };
 
 /// Simple controller used by `rbdgen simulate` (the generated step() takes tau from the caller).

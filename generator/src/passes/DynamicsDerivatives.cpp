@@ -124,9 +124,11 @@ std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<WorldB
   return c;
 }
 
-/// From this many dofs on, the pairs' long-lived inputs go through arrays (detail::opaque): g++ -O2
-/// on talos_reduced (38 dofs): 85 s -> 44 s for inverse_dynamics_derivatives, ~9 % slower at run
-/// time; below it the registers win (ur5e: 650 ns in registers, 1,350 ns through the arrays).
+/// From this many dofs on, the pairs' long-lived inputs go through arrays (detail::opaque) and each
+/// column is an out-of-line lambda: g++ -O2 on talos_reduced (38 dofs): 85 s -> 44 s (arrays) -> 26 s
+/// (columns; 66 s on the same day without them) for inverse_dynamics_derivatives, as fast at run time
+/// (8.3-9.0 us vs 9.6-9.9 us); below it the registers win (ur5e: 650 ns in registers, 1,350 ns
+/// through the arrays).
 constexpr int kStashDofs = 24;
 
 /// Stores the non-constant scalars in array[k][0..] and replaces them by those slots.
@@ -234,6 +236,9 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
       const Motion & sm = s[j][d];
       const int col = mj.vIndex + static_cast<int>(d);
       const std::string h = fmt::format("{}_{}", mj.tag, d);
+      // with the inputs in arrays, each column is a function of its own (a lambda the compiler does
+      // not inline): register allocation per column rather than over the whole body (compile time)
+      if(stashOn) b.line("[&]() RBDGEN_NOINLINE {");
       const Motion yvQ = cross(b, wv, sm, h + "yv");
       const Motion yaQ = add(b, cross(b, aw, sm, h + "axs"), cross(b, cross(b, sm, wv, h + "sxw"), wv, h + "sxwxw"), h + "ya");
       const Motion yaA = add(b, cross(b, vCarrier, sm, h + "sd"), yvQ, h + "yaA");
@@ -285,6 +290,7 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
           onEntry(row, col, dot(b, s[ak][e], dFq, hk + "q"), dot(b, s[ak][e], dFa, hk + "a"));
         }
       }
+      if(stashOn) b.line("}();");
     }
   }
 }

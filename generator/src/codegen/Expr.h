@@ -78,4 +78,13 @@ Scalar sub(Block & b, const Scalar & x, const Scalar & y, const std::string & hi
 Scalar mul(Block & b, const Scalar & x, const Scalar & y, const std::string & hint);
 Scalar neg(Block & b, const Scalar & x, const std::string & hint);
 
+/// Calls of the header's detail::Lanes<S> (templates/detail_lanes.hpp.in) for the operations that are
+/// not arithmetic: on one value the plain expression, on a pack of states (batch.hpp) every lane.
+inline std::string lanesSqrt(const std::string & x) { return "detail::Lanes<S>::sqrt(" + x + ")"; }
+inline std::string lanesSelect(const std::string & mask, const std::string & a, const std::string & b)
+{
+  return "detail::Lanes<S>::select(" + mask + ", " + a + ", " + b + ")";
+}
+inline std::string lanesBoth(const std::string & a, const std::string & b) { return "detail::Lanes<S>::both(" + a + ", " + b + ")"; }
+
 } // namespace rbdgen::cg

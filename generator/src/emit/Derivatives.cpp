@@ -88,7 +88,7 @@ void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std:
   const Vec3 p0 = sub(b, pos, r0, h + "_p0"); // the point from the origin of the passes
   // fn = k depth - c pdot_z, ft = -mu fn vt / r: F_p = [0 0 Fpz], F_v below (zero when not pushed)
   const std::string fn = Block::text(f[2]), on = h + "_on";
-  b.line(fmt::format("const S {} = detail::Lanes<S>::select({} > S(0), S(1), S(0));", on, fn));
+  b.line(fmt::format("const S {} = {};", on, cg::lanesSelect(fn + " > S(0)", "S(1)", "S(0)")));
   Vec3 Fpz = Vec3::zero();
   Mat3 Fv;
   for(int i = 0; i < 9; ++i) Fv.m[static_cast<std::size_t>(i)] = Scalar::constant(0.0);
@@ -96,7 +96,7 @@ void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std:
   Fv(2, 2) = b.def(fmt::format("{} * {}", Block::literal(-fx.contactDamping), on), h + "_Fv22");
   if(fx.mu != 0.0)
   {
-    const std::string r = b.def(fmt::format("detail::Lanes<S>::sqrt({})", Block::text(b.sum({Term{1.0, {vel[0], vel[0]}}, Term{1.0, {vel[1], vel[1]}},
+    const std::string r = b.def(cg::lanesSqrt(Block::text(b.sum({Term{1.0, {vel[0], vel[0]}}, Term{1.0, {vel[1], vel[1]}},
                                                                           Term{fx.slipVelocity * fx.slipVelocity, {}}}, h + "_r2"))),
                                 h + "_r").name();
     const std::string vx = Block::text(vel[0]), vy = Block::text(vel[1]);
@@ -254,7 +254,8 @@ EmittedBody sceneInverseDynamicsDerivativesBody(const RobotModel & rm, const Sce
     {
       const std::string a = fmt::format("alpha[{}]", i), vs2 = Block::literal(fx.frictionVelocity * fx.frictionVelocity);
       b.line(fmt::format("const S fr2_{} = {} * {} + {};", i, a, a, vs2));
-      rhs += fmt::format("{}{} * {} / (fr2_{} * detail::Lanes<S>::sqrt(fr2_{}))", rhs.empty() ? "" : " + ", Block::literal(friction), vs2, i, i);
+      const std::string fr2 = fmt::format("fr2_{}", i);
+      rhs += fmt::format("{}{} * {} / ({} * {})", rhs.empty() ? "" : " + ", Block::literal(friction), vs2, fr2, cg::lanesSqrt(fr2));
     }
     b.line(fmt::format("d.dtau_dalpha({}, {}) += {};", i, i, rhs));
   }

@@ -35,16 +35,14 @@ Vec3 emitContactForce(Block & b, const SceneEffects & fx, const Vec3 & p, const 
   const Scalar d = b.sum({Term{fx.groundHeight, {}}, Term{-1.0, {p[2]}}}, h + "_depth");
   const Scalar push = b.sum({Term{fx.stiffness, {d}}, Term{-fx.contactDamping, {pd[2]}}}, h + "_push");
   const std::string dt = Block::text(d), pt = Block::text(push);
-  // (lane-wise: a pack of states (batch.hpp) selects per lane, a scalar is the ternary)
-  const Scalar fn =
-      b.def(fmt::format("detail::Lanes<S>::select(detail::Lanes<S>::both({} > S(0), {} > S(0)), {}, S(0))", dt, pt, pt), h + "_fn");
+  const Scalar fn = b.def(cg::lanesSelect(cg::lanesBoth(dt + " > S(0)", pt + " > S(0)"), pt, "S(0)"), h + "_fn");
   Vec3 f = Vec3::zero();
   f[2] = fn;
   if(fx.mu != 0.0)
   {
     const Scalar vt2 = b.sum({Term{1.0, {pd[0], pd[0]}}, Term{1.0, {pd[1], pd[1]}},
                               Term{fx.slipVelocity * fx.slipVelocity, {}}}, h + "_vt2");
-    const Scalar g = b.def(fmt::format("{} * {} / detail::Lanes<S>::sqrt({})", Block::literal(-fx.mu), Block::text(fn), Block::text(vt2)),
+    const Scalar g = b.def(fmt::format("{} * {} / {}", Block::literal(-fx.mu), Block::text(fn), cg::lanesSqrt(Block::text(vt2))),
                            h + "_mu");
     f[0] = mul(b, g, pd[0], h + "_fx");
     f[1] = mul(b, g, pd[1], h + "_fy");
@@ -108,8 +106,9 @@ EmittedBody sceneRneaBody(const RobotModel & rm, const SceneEffects & fx, bool w
       if(ii < fx.damping.size()) terms.push_back(Term{fx.damping[ii], {Scalar::var(al)}});
       if(ii < fx.friction.size() && fx.friction[ii] != 0.0)
         // Coulomb friction, regularised: friction alpha / sqrt(alpha^2 + v_s^2)
-        terms.push_back(Term{1.0, {b.def(fmt::format("{} * {} / detail::Lanes<S>::sqrt({} * {} + {})", Block::literal(fx.friction[ii]), al, al,
-                                                     al, Block::literal(fx.frictionVelocity * fx.frictionVelocity)),
+        terms.push_back(Term{1.0, {b.def(fmt::format("{} * {} / {}", Block::literal(fx.friction[ii]), al,
+                                                     cg::lanesSqrt(fmt::format("{} * {} + {}", al, al,
+                                                                               Block::literal(fx.frictionVelocity * fx.frictionVelocity)))),
                                          fmt::format("fr{}", i))}});
       b.line(fmt::format("tau[{}] = {};", i, Block::text(terms)));
     }

@@ -1,6 +1,7 @@
 #pragma once
-// Generation from a URDF: load (loader/), build the runtime MultiBody, fold it into a RobotModel,
-// emit the header from templates/, write it atomically.
+// The driver: read the options, load the URDF or scene (loader/), build the runtime MultiBody, fold
+// it into a RobotModel, report the model's warnings, hand it to the header assemblers (emit/Header.h,
+// emit/SceneHeader.h) and write their files atomically.
 
 #include <map>
 #include <string>
@@ -54,30 +55,6 @@ std::string depfileText(const std::string & target, const std::vector<std::strin
 
 /// Build the generator model of a loaded robot (link frames as in the URDF).
 RobotModel robotModelFromUrdf(const rbd::parsers::ParserResult & robot);
-
-/// Emit the header for a model (ns: namespace, sourceName and sourceHash for provenance).
-/// derivatives: also emit inverse_dynamics_derivatives() and forward_dynamics_derivatives().
-/// A non-empty coupling (mimic joints) emits the full model in ns::independent and the coupled API in
-/// ns (emit/MimicCoupled.h); otherwise ns::independent is an alias of ns.
-std::string emitHeader(const RobotModel & rm, const std::string & ns, const std::string & sourceName,
-                       const std::string & sourceHash, const std::string & options, bool derivatives = false,
-                       const rbd::parsers::MimicCoupling & coupling = {});
-
-/// Which functions the header under a batch header has (a plain header: all but the wrenches).
-struct BatchFunctions
-{
-  bool forwardDynamics = true;
-  bool derivatives = false;
-  bool gravityTorques = true;   ///< gravity_torques (a scene without gravity has none)
-  bool nonlinearEffects = true; ///< nonlinear_effects (a scene without gravity and velocity terms has none)
-  bool wrenches = false;        ///< a scene's external wrenches: an argument of ID, FD and their derivatives
-};
-
-/// The batch header NS/batch.hpp (templates/batch.hpp.in) over the header of the same robot or scene:
-/// provenance is its first comment lines; codeNamespace holds the emitted code (ns, or ns::independent
-/// when mimic joints are coupled).
-std::string emitBatchHeader(const std::string & ns, const std::string & codeNamespace, const std::string & provenance,
-                            const BatchFunctions & functions);
 
 /// Write files under outDir: each goes to a temporary file first and is renamed into place only
 /// once all were written; a file whose content did not change is left untouched (mtime kept).

@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "Generate.h"
+#include "emit/Header.h"
 #include "ProgrammaticModels.h"
 
 int main(int argc, char ** argv)
@@ -21,7 +22,7 @@ int main(int argc, char ** argv)
       const rbdgentest::ProgrammaticModel m = rbdgentest::programmaticModel(k);
       const std::vector<sva::PTransformd> identity(static_cast<std::size_t>(m.mb.nrBodies()), sva::PTransformd::Identity());
       const rbdgen::RobotModel rm = rbdgen::buildRobotModel(m.mb, identity, m.name);
-      files.push_back({m.name + "/dynamics.hpp", rbdgen::emitHeader(rm, m.name, "programmatic model " + m.name, "-", "in code, derivatives", true)});
+      files.push_back({m.name + "/dynamics.hpp", rbdgen::emit::emitHeader(rm, m.name, "programmatic model " + m.name, "-", "in code, derivatives", true)});
     }
     rbdgen::writeFiles(argv[1], files);
   }

@@ -40,11 +40,17 @@ struct RneaTerms
   bool velocity = true;      ///< alpha (Coriolis, centrifugal)
   bool acceleration = true;  ///< alphaD
   bool gravity = true;
-  bool externalForces = false; ///< `fext[b]`: wrench on each link, world coordinates at the world origin
   Eigen::Vector3d gravityVector = Eigen::Vector3d(0, 0, -9.81); ///< world, m/s^2 (used when `gravity`)
 };
-/// Reads q (+ alpha, alphaD, fext per terms); fills `tau`.
+/// Reads q (+ alpha, alphaD per terms); fills `tau`.
 EmittedBody rneaBody(const RobotModel & rm, const RneaTerms & terms);
+/// The body of detail::inverse_dynamics_from: inverse dynamics under gravity from the header's
+/// shared kernels `K` (a parameter), alpha and alphaD; fills `tau`.
+EmittedBody inverseDynamicsFromKernelsBody(const RobotModel & rm);
+/// Reads q, alpha, alphaD and `fext[b]` (a wrench on each link, world coordinates at the world
+/// origin); declares and fills `tau`: detail::inverse_dynamics_from minus the wrenches' torques
+/// (passes::worldWrenchTorques).
+EmittedBody inverseDynamicsWrenchesBody(const RobotModel & rm);
 
 /// Reads q; fills `H` (composite rigid-body algorithm), plus diag(armature) when given (per dof).
 EmittedBody massMatrixBody(const RobotModel & rm, const std::vector<double> & armature = {});

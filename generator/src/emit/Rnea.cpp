@@ -11,29 +11,65 @@ namespace rbdgen::emit
 
 using namespace rbdgen::passes;
 
-EmittedBody rneaBody(const RobotModel & rm, const RneaTerms & terms)
+namespace
 {
-  Block b;
-  PassContext ctx(b, rm);
+
+void emitRnea(PassContext & ctx, const RneaTerms & terms)
+{
   MotionRequest req;
-  req.poses = terms.externalForces;
   req.velocity = terms.velocity;
   req.acceleration = true;
   req.alphaD = terms.acceleration;
   if(terms.gravity) req.gravity = terms.gravityVector;
   const MotionState m = forwardMotion(ctx, req, ctx.allJoints());
   std::vector<Force> f = inertialForces(ctx, m, terms.velocity, ctx.allJoints());
-  if(terms.externalForces)
-  {
-    b.comment("external wrenches: f_k -= X_0_k^* fext (world coordinates at the world origin)");
-    for(std::size_t i = 0; i < rm.bodies.size(); ++i)
-    {
-      const std::string slot = linkSlot(rm, "fext", static_cast<int>(i));
-      subtractWorldWrench(ctx, f, m, static_cast<int>(i), {vec3Var(slot, 0), vec3Var(slot, 3)},
-                          fmt::format("fx_{}", rm.bodies[i].ident));
-    }
-  }
   backwardForces(ctx, f, writeTorques(ctx, "tau"));
+}
+
+} // namespace
+
+EmittedBody rneaBody(const RobotModel & rm, const RneaTerms & terms)
+{
+  Block b;
+  PassContext ctx(b, rm);
+  emitRnea(ctx, terms);
+  return finish(b);
+}
+
+EmittedBody inverseDynamicsFromKernelsBody(const RobotModel & rm)
+{
+  Block b;
+  PassContext ctx(b, rm);
+  ctx.kernelsFromCaller();
+  emitRnea(ctx, {});
+  return finish(b);
+}
+
+EmittedBody inverseDynamicsWrenchesBody(const RobotModel & rm)
+{
+  Block b;
+  if(rm.joints.empty())
+  {
+    b.line("Tangent<S> tau = inverse_dynamics<S>(q, alpha, alphaD);");
+    return finish(b);
+  }
+  PassContext ctx(b, rm);
+  const MotionState m = forwardMotion(ctx, MotionRequest::make(true, false), ctx.allJoints());
+  ctx.kernel(0); // (declares K)
+  b.line("Tangent<S> tau;");
+  b.line("detail::inverse_dynamics_from<S>(K, alpha, alphaD, tau);");
+  std::vector<Force> w;
+  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
+  {
+    const std::string slot = linkSlot(rm, "fext", static_cast<int>(i));
+    w.push_back({vec3Var(slot, 0), vec3Var(slot, 3)});
+  }
+  worldWrenchTorques(ctx, m.X0, w, [&](int k, const std::vector<Scalar> & tau) {
+    const MovingJoint & mj = ctx.joint(k);
+    for(int d = 0; d < mj.nv; ++d)
+      if(!tau[static_cast<std::size_t>(d)].isZero())
+        b.line(fmt::format("tau[{}] -= {};", mj.vIndex + d, Block::text(tau[static_cast<std::size_t>(d)])));
+  });
   return finish(b);
 }
 

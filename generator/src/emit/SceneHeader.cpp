@@ -16,6 +16,7 @@
 #include "../passes/SharedPasses.h"
 #include "../passes/SupportPath.h"
 #include "Functions.h"
+#include "Header.h"
 #include "MimicCoupled.h"
 #include "StepDerivatives.h"
 #include "Template.h"
@@ -296,16 +297,6 @@ std::string describeEffects(const rbd::scene::Scene & scene, const SceneEffects 
   return s;
 }
 
-std::string noForwardDynamicsNote(const std::vector<std::string> & joints)
-{
-  std::string names;
-  for(const auto & j : joints) names += (names.empty() ? "'" : ", '") + j + "'";
-  return fmt::format("// No forward dynamics: joint(s) {} move only massless links, so the mass matrix is singular\n"
-                     "// at every configuration. Fix: give those links an <inertial> with mass in the URDF, lock the\n"
-                     "// joints in a scene, or give each of them armature > 0 in a scene.",
-                     names);
-}
-
 bool coupledSceneForwardDynamics(const RobotModel & rm, const SceneEffects & fx, const rbd::parsers::MimicCoupling & c)
 {
   if(!rm.checks.stackedFree.empty()) return false;
@@ -349,20 +340,8 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
       {"coupled", false},
       {"independent_alias", !coupled},
   };
-  std::map<std::string, std::string> v;
-  v["provenance"] = provenance;
-  if(coupled)
-    v["provenance"] += fmt::format("\n// Mimic joints coupled: nq = {}, nv = {} in namespace {} (the full model first, in {}::independent).",
-                                   coupling.nq, coupling.nv, ns, ns);
-  v["namespace"] = coupled ? ns + "::independent" : ns;
-  v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
-  v["detail_lanes"] = templateText("detail_lanes.hpp.in"); // detail::Lanes<S> (one state, or a pack: batch.hpp)
-  v["detail_inline"] = templateText("detail_inline.hpp.in"); // RBDGEN_INLINE (the shared passes)
-  if(scene.outputs.derivatives) v["detail_opaque"] = templateText("detail_opaque.hpp.in"); // detail::opaque (derivatives)
-  v.merge(robotTemplateValues(rm)); // nq, nv, nbodies, Body enum, names
-  v.erase("nframes");                // not shown by the scene header
-  v["has_forward_dynamics"] = fd ? "true" : "false";
-  v["has_derivatives"] = scene.outputs.derivatives ? "true" : "false";
+  std::map<std::string, std::string> v = preludeValues(rm, ns, provenance, coupling, fd, scene.outputs.derivatives);
+  v.erase("nframes"); // not shown by the scene header
   v["initial_state"] = initialStateLines(scene, sr, rm);
   // From here on, the passes that run over all joints are emitted once (detail::) and called.
   auto shared = std::make_unique<passes::SharedPasses>(rm);
@@ -396,11 +375,11 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
                 ", tree-sparse L^T D L factorisation";
   v["fn_mass_matrix"] = massMatrixBody(rm, fx.armature).text;
   const Eigen::Vector3d g = gravity ? *fx.gravity : Eigen::Vector3d::Zero();
-  if(gravity) v["fn_gravity_torques"] = rneaBody(rm, {false, false, true, false, g}).text;
-  if(velocity) v["fn_velocity_torques"] = rneaBody(rm, {true, false, false, false, g}).text;
+  if(gravity) v["fn_gravity_torques"] = rneaBody(rm, {false, false, true, g}).text;
+  if(velocity) v["fn_velocity_torques"] = rneaBody(rm, {true, false, false, g}).text;
   if(gravity || velocity)
   {
-    v["fn_nonlinear_effects"] = rneaBody(rm, {velocity, false, gravity, false, g}).text;
+    v["fn_nonlinear_effects"] = rneaBody(rm, {velocity, false, gravity, g}).text;
     v["bias_doc"] = gravity && velocity ? "gravity, Coriolis and centrifugal torques" : (gravity ? "gravity torques" : "Coriolis and centrifugal torques");
   }
   v["fn_inverse_dynamics"] = sceneRneaBody(rm, fx, true).text;

@@ -25,9 +25,6 @@ std::vector<std::string> unregularisedMasslessJoints(const RobotModel & rm, cons
 /// "gravity (0, 0, -9.81); velocity terms; damping on 3 dofs; ..." (provenance).
 std::string describeEffects(const rbd::scene::Scene & scene, const SceneEffects & fx);
 
-/// The comment that replaces forward dynamics when the mass matrix is singular.
-std::string noForwardDynamicsNote(const std::vector<std::string> & joints);
-
 /// Whether the scene's coupled system (mimic joints coupled) has forward dynamics: no stacked free
 /// joints, and no joint group that moves only massless links without armature.
 bool coupledSceneForwardDynamics(const RobotModel & rm, const SceneEffects & fx, const rbd::parsers::MimicCoupling & c);

@@ -38,6 +38,9 @@ std::string fillTemplate(const std::string & text, const std::map<std::string, s
     if(it == values.end()) throw TemplateError(templateName + ": unknown placeholder '{{" + name + "}}'");
     out.append(text, pos, open - pos);
     out += it->second;
+    // a placeholder on a line of its own, filled with whole lines: the line's own end is the last one
+    const bool ownLine = (open == 0 || text[open - 1] == '\n') && close + 2 < text.size() && text[close + 2] == '\n';
+    if(ownLine && !it->second.empty() && it->second.back() == '\n') out.pop_back();
     used.insert(name);
     pos = close + 2;
   }

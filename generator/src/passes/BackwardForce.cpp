@@ -74,6 +74,29 @@ void backwardForces(PassContext & ctx, std::vector<Force> & f,
   }
 }
 
+void worldWrenchTorques(PassContext & ctx, const std::vector<Xform> & X0, const std::vector<Force> & linkWrench,
+                        const std::function<void(int k, const std::vector<Scalar> & tau)> & onTau)
+{
+  Block & b = ctx.block();
+  const RobotModel & rm = ctx.model();
+  std::vector<Force> W(rm.joints.size(), Force::zero());
+  b.comment("W_k: the wrenches on joint k's subtree (world coordinates at the world origin)");
+  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
+  {
+    const int o = rm.bodies[i].owner; // a link that never moves takes no wrench
+    if(o >= 0) W[static_cast<std::size_t>(o)] = add(b, W[static_cast<std::size_t>(o)], linkWrench[i], ctx.joint(o).tag + "_W");
+  }
+  for(std::size_t k = W.size(); k-- > 0;)
+    if(const int p = rm.joints[k].parent; p >= 0)
+      W[static_cast<std::size_t>(p)] = add(b, W[static_cast<std::size_t>(p)], W[k], ctx.joint(p).tag + "_W");
+  b.comment("tau_ext,k = S_k^T X_0_k^* W_k");
+  for(std::size_t k = 0; k < W.size(); ++k)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    onTau(static_cast<int>(k), projectForce(b, ctx.kernel(static_cast<int>(k)), dualApply(b, X0[k], W[k], mj.tag + "_XW"), mj.tag + "_tauW"));
+  }
+}
+
 std::function<void(int, const std::vector<Scalar> &)> writeTorques(PassContext & ctx, const std::string & dst)
 {
   return [&ctx, dst](int k, const std::vector<Scalar> & tau) {

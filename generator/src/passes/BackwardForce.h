@@ -34,6 +34,14 @@ void subtractPointForce(PassContext & ctx, std::vector<Force> & f, const MotionS
 void backwardForces(PassContext & ctx, std::vector<Force> & f,
                     const std::function<void(int k, const std::vector<Scalar> & tau)> & onTau);
 
+/// The world wrenches' part of inverse dynamics as a pass of its own (RNEA is linear in the wrenches):
+///   W_k = sum of the wrenches on the links of joint k's subtree (world coordinates at the world
+///   origin, so they add without transforms), tau_ext,k = S_k^T X_0_k^* W_k,
+/// handed to onTau(k, tau_ext,k) for every joint; inverse dynamics with the wrenches is tau - tau_ext.
+/// linkWrench: per link (body index), zero where none; X0: world poses of every joint's body frame.
+void worldWrenchTorques(PassContext & ctx, const std::vector<Xform> & X0, const std::vector<Force> & linkWrench,
+                        const std::function<void(int k, const std::vector<Scalar> & tau)> & onTau);
+
 /// onTau that writes `<dst>[i] = tau;` for each dof i of joint k.
 std::function<void(int, const std::vector<Scalar> &)> writeTorques(PassContext & ctx, const std::string & dst);
 

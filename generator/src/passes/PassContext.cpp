@@ -22,7 +22,7 @@ const JointKernel & PassContext::kernel(int k)
   if(given_) return (*given_)[static_cast<std::size_t>(k)];
   if(shared_)
   {
-    callOnce(fmt::format("[[maybe_unused]] const auto K = detail::joint_kernels<S>({});", q_));
+    callOnce(kernelsCall());
     return shared_->kernels()[static_cast<std::size_t>(k)];
   }
   auto & K = kernels_[static_cast<std::size_t>(k)];
@@ -33,6 +33,16 @@ const JointKernel & PassContext::kernel(int k)
     K = emitJointKernel(b_, mj, q_);
   }
   return *K;
+}
+
+std::string PassContext::kernelsCall() const
+{
+  return fmt::format("[[maybe_unused]] const auto K = detail::joint_kernels<S>({});", q_);
+}
+
+void PassContext::kernelsFromCaller()
+{
+  calls_.insert(kernelsCall());
 }
 
 void PassContext::callOnce(const std::string & line)

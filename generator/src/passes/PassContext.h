@@ -37,8 +37,12 @@ public:
   SharedPasses * shared() const { return shared_; }
   /// Emit `line` (a call of a shared pass) unless this body already has it.
   void callOnce(const std::string & line);
+  /// The body receives the shared kernels as a parameter `K` (a detail function of the header):
+  /// the call of detail::joint_kernels is not emitted.
+  void kernelsFromCaller();
 
 private:
+  std::string kernelsCall() const;
   Block & b_;
   const RobotModel & rm_;
   std::string q_;

@@ -29,10 +29,11 @@ BenchCase loadCase(const std::string & name, const std::string & urdf, bool floa
 
   std::mt19937 rng(20261122);
   std::uniform_real_distribution<double> u(-1, 1);
+  std::mt19937 rngWrench(20261126);
   for(std::size_t s = 0; s < kPoolSize; ++s)
   {
     State st{Eigen::VectorXd(mb.nrParams()), Eigen::VectorXd(mb.nrDof()), Eigen::VectorXd(mb.nrDof()),
-             Eigen::VectorXd(mb.nrDof())};
+             Eigen::VectorXd(mb.nrDof()), Eigen::VectorXd(6 * mb.nrBodies())};
     for(int i = 0; i < mb.nrJoints(); ++i)
     {
       const auto & j = mb.joint(i);
@@ -51,6 +52,7 @@ BenchCase loadCase(const std::string & name, const std::string & urdf, bool floa
       st.alphaD(k) = 2 * u(rng);
       st.tau(k) = 2 * u(rng);
     }
+    for(Eigen::Index k = 0; k < st.fext.size(); ++k) st.fext(k) = 2 * u(rngWrench);
     c.pool.push_back(st);
   }
   return c;
@@ -73,6 +75,12 @@ Reference reference(const BenchCase & c, const State & s)
   rbd::InverseDynamics id(mb);
   id.inverseDynamics(mb, mbc);
   r.tauID = rbd::dofToVector(mb, mbc.jointTorque);
+
+  for(int b = 0; b < mb.nrBodies(); ++b)
+    mbc.force[static_cast<std::size_t>(b)] = sva::ForceVecd(Eigen::Matrix<double, 6, 1>(s.fext.segment<6>(6 * b)));
+  id.inverseDynamics(mb, mbc);
+  r.tauIDext = rbd::dofToVector(mb, mbc.jointTorque);
+  for(auto & f : mbc.force) f = sva::ForceVecd::Zero();
 
   r.tauNLE = Eigen::VectorXd(nv);
   id.nonLinearEffects(mb, mbc, r.tauNLE);

@@ -18,6 +18,7 @@ constexpr std::size_t kPoolSize = 256; ///< states in the pool (a power of two: 
 struct State
 {
   Eigen::VectorXd q, alpha, alphaD, tau;
+  Eigen::VectorXd fext; ///< 6 x nbodies: a wrench on each link, world coordinates at the world origin
 };
 
 /// The runtime's results at one state: what every other implementation is checked against.
@@ -25,7 +26,7 @@ struct Reference
 {
   std::vector<sva::PTransformd> bodyPosW; ///< X_0_i, world to body i
   std::vector<sva::MotionVecd> bodyVelB;  ///< body velocity in body coordinates
-  Eigen::VectorXd tauID, tauGravity, tauNLE, alphaDFD;
+  Eigen::VectorXd tauID, tauIDext, tauGravity, tauNLE, alphaDFD; ///< tauIDext: ID with the state's fext
   Eigen::MatrixXd H;    ///< nv x nv
   Eigen::MatrixXd J;    ///< 6 x nv, [angular; linear], world axes at the origin of jacobianBody
   Eigen::Vector3d com;  ///< world
@@ -42,7 +43,8 @@ struct BenchCase
 };
 
 /// Loads the URDF (free root joint when floating) and draws kPoolSize seeded random states:
-/// joint values in [-3, 3] (unit quaternions), velocities, accelerations, torques in [-2, 2].
+/// joint values in [-3, 3] (unit quaternions), velocities, accelerations, torques in [-2, 2];
+/// link wrenches in [-2, 2] from a second generator (the other values as before they existed).
 BenchCase loadCase(const std::string & name, const std::string & urdf, bool floating);
 
 /// The runtime's results at state s (FK, FV, ID, gravity, NLE, H, FD by CRBA, Jacobian, CoM).

@@ -7,7 +7,7 @@
 namespace rbdbench
 {
 
-const std::vector<std::string> kAlgorithms = {"fk",       "fk_vel", "id",      "gravity", "nle", "mass_matrix",
+const std::vector<std::string> kAlgorithms = {"fk",       "fk_vel", "id",      "id_fext", "gravity", "nle", "mass_matrix",
                                               "fd",       "fd_aba", "fd_crba", "jacobian", "jacobian_kin", "com",
                                               "id_derivatives", "fd_derivatives"};
 

@@ -25,6 +25,7 @@ struct RuntimeData
   std::vector<rbd::MultiBodyConfig> pool;      ///< q, alpha, alphaD, jointTorque of each state
   std::vector<rbd::MultiBodyConfig> poolStill; ///< the same q, alpha = alphaD = 0
   std::vector<rbd::MultiBodyConfig> poolID, poolFD; ///< copies for the algorithms that write jointTorque / alphaD
+  std::vector<rbd::MultiBodyConfig> poolIDext;      ///< as poolID, with the state's wrench on every link (force)
   rbd::InverseDynamics id;
   rbd::ForwardDynamics fd;
   rbd::ForwardDynamicsABA aba;
@@ -53,6 +54,10 @@ void registerRuntime(const BenchCase & c, CheckLog & log)
   }
   d->poolID = d->pool;
   d->poolFD = d->pool;
+  d->poolIDext = d->pool;
+  for(std::size_t k = 0; k < c.pool.size(); ++k)
+    for(int b = 0; b < mb.nrBodies(); ++b)
+      d->poolIDext[k].force[static_cast<std::size_t>(b)] = sva::ForceVecd(Eigen::Matrix<double, 6, 1>(c.pool[k].fext.segment<6>(6 * b)));
   d->id = rbd::InverseDynamics(mb);
   d->fd = rbd::ForwardDynamics(mb);
   d->aba = rbd::ForwardDynamicsABA(mb);
@@ -74,6 +79,14 @@ void registerRuntime(const BenchCase & c, CheckLog & log)
   });
   addBench(r, "id", impl, [d](std::size_t k) {
     auto & mbc = d->poolID[k];
+    rbd::forwardKinematics(d->mb, mbc);
+    rbd::forwardVelocity(d->mb, mbc);
+    d->id.inverseDynamics(d->mb, mbc);
+    benchmark::DoNotOptimize(mbc.jointTorque.front());
+    benchmark::ClobberMemory();
+  });
+  addBench(r, "id_fext", impl, [d](std::size_t k) {
+    auto & mbc = d->poolIDext[k];
     rbd::forwardKinematics(d->mb, mbc);
     rbd::forwardVelocity(d->mb, mbc);
     d->id.inverseDynamics(d->mb, mbc);

@@ -13,10 +13,11 @@ import glob
 import json
 import os
 
-ALGOS = ["fk", "fk_vel", "id", "gravity", "nle", "mass_matrix", "fd", "fd_aba", "fd_crba", "jacobian", "jacobian_kin", "com",
+ALGOS = ["fk", "fk_vel", "id", "id_fext", "gravity", "nle", "mass_matrix", "fd", "fd_aba", "fd_crba", "jacobian", "jacobian_kin", "com",
          "id_derivatives", "fd_derivatives"]
 ALGO_TITLES = {
-    "fk": "FK, all links", "fk_vel": "FK + velocities", "id": "inverse dynamics", "gravity": "gravity torques",
+    "fk": "FK, all links", "fk_vel": "FK + velocities", "id": "inverse dynamics",
+    "id_fext": "inverse dynamics with a wrench on every link", "gravity": "gravity torques",
     "nle": "nonlinear effects", "mass_matrix": "mass matrix", "fd": "forward dynamics (default)",
     "fd_aba": "forward dynamics ABA", "fd_crba": "forward dynamics CRBA+LTDL", "jacobian": "Jacobian (last moving link)",
     "jacobian_kin": "Jacobian via kinematics(q) (the former jacobian(body, q))",

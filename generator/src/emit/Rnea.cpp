@@ -1,5 +1,6 @@
-// Inverse dynamics (recursive Newton-Euler): forward motion pass, inertial and external force
-// sources, backward force pass.
+// Inverse dynamics (recursive Newton-Euler): forward motion pass, inertial force source, backward
+// force pass; with a wrench on every link, that RNEA (detail::inverse_dynamics_from) minus the
+// wrenches' torques of passes::worldWrenchTorques.
 #include <fmt/format.h>
 
 #include "../passes/BackwardForce.h"

@@ -75,7 +75,7 @@ int main(int argc, char ** argv)
       row(name, rm.nv, "id", {emit::rneaBody(rm, {true, true, true, false})}, 93 * n - 69, 81 * n - 66);
       row(name, rm.nv, "gravity", {emit::rneaBody(rm, {false, false, true, false})});
       row(name, rm.nv, "nle", {nle});
-      row(name, rm.nv, "mass_matrix", {emit::massMatrixBody(rm)}, 10 * n * n + 22 * n - 32, 6 * n * n + 37 * n - 43);
+      row(name, rm.nv, "mass_matrix", {emit::massMatrixLowerBody(rm).body}, 10 * n * n + 22 * n - 32, 6 * n * n + 37 * n - 43);
       row(name, rm.nv, "fd_crba", {emit::forwardDynamicsBody(rm), nle});
       row(name, rm.nv, "fd_aba", {emit::abaBody(rm)}, 224 * n - 259, 205 * n - 248);
       row(name, rm.nv, "jacobian", {kin, emit::jacobianBody(rm)});

@@ -119,6 +119,7 @@ std::vector<GeneratedFile> generateScene(const GenerateOptions & opt, std::vecto
     bf.gravityTorques = fx.gravity.has_value();
     bf.nonlinearEffects = fx.gravity.has_value() || fx.velocityTerms;
     bf.wrenches = !fx.wrenchBodies.empty();
+    bf.massMatrixLower = coupling.empty();
     files.push_back(GeneratedFile{ns + "/batch.hpp", emit::emitBatchHeader(ns, coupling.empty() ? ns : ns + "::independent", p, bf)});
   }
   return files;
@@ -186,6 +187,7 @@ std::vector<GeneratedFile> generateFiles(const GenerateOptions & opt, std::vecto
     emit::BatchFunctions bf;
     bf.forwardDynamics = fd;
     bf.derivatives = opt.derivatives;
+    bf.massMatrixLower = coupling.empty();
     files.push_back(GeneratedFile{ns + "/batch.hpp", emit::emitBatchHeader(ns, codeNs, p, bf)});
   }
   return files;

@@ -35,6 +35,15 @@ TEST(Template, UnterminatedPlaceholderIsAnError)
   EXPECT_THROW(fillTemplate("a {{x", {{"x", "1"}}, "t"), TemplateError);
 }
 
+TEST(Template, SectionsKeepTheirLinesByFlagAndInvertedSectionsTheOpposite)
+{
+  const std::string t = "a\n{{#on}}\nb\n{{/on}}\n{{^on}}\nc\n{{/on}}\n{{#off}}\nd\n{{/off}}\n{{^off}}\ne\n{{/off}}\nf\n";
+  EXPECT_EQ(selectSections(t, {{"on", true}, {"off", false}}, "t"), "a\nb\ne\nf\n");
+  EXPECT_EQ(selectSections(t, {{"on", false}, {"off", true}}, "t"), "a\nc\nd\nf\n");
+  EXPECT_THROW(selectSections("{{^x}}\na\n{{/y}}\n", {{"x", true}, {"y", true}}, "t"), TemplateError); // unbalanced
+  EXPECT_THROW(selectSections("{{^x}}\na\n", {{"x", true}}, "t"), TemplateError);                     // not closed
+}
+
 TEST(Identifiers, AreValidCxx)
 {
   EXPECT_EQ(sanitizeIdentifier("my-robot"), "my_robot");

@@ -122,19 +122,28 @@ std::vector<Scalar> emitLtdlSolve(Block & b, const Ltdl & f, std::vector<Scalar>
   return x;
 }
 
-EmittedBody massMatrixBody(const RobotModel & rm, const std::vector<double> & armature)
+MassMatrixLower massMatrixLowerBody(const RobotModel & rm, const std::vector<double> & armature)
 {
   Block b;
   const auto L = emitMassMatrix(b, rm, armature);
+  MassMatrixLower out;
+  std::vector<std::vector<int>> slot(static_cast<std::size_t>(rm.nv), std::vector<int>(static_cast<std::size_t>(rm.nv), -1));
   for(int r = 0; r < rm.nv; ++r)
     for(int c = 0; c <= r; ++c)
     {
       const Scalar & x = L[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
       if(x.isZero()) continue;
-      b.line(r == c ? fmt::format("H({}, {}) = {};", r, c, Block::text(x))
-                    : fmt::format("H({}, {}) = H({}, {}) = {};", r, c, c, r, Block::text(x)));
+      b.line(fmt::format("put({}, {}, {});", r, c, Block::text(x)));
+      slot[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = slot[static_cast<std::size_t>(c)][static_cast<std::size_t>(r)] = out.nnz++;
     }
-  return finish(b);
+  out.body = finish(b);
+  for(int r = 0; r < rm.nv; ++r)
+  {
+    std::string row;
+    for(int s : slot[static_cast<std::size_t>(r)]) row += (row.empty() ? "" : ", ") + std::to_string(s);
+    out.slots += fmt::format("    {}, // row {}\n", row, r);
+  }
+  return out;
 }
 
 EmittedBody forwardDynamicsBody(const RobotModel & rm, const FdOptions & opt)

@@ -52,8 +52,18 @@ EmittedBody inverseDynamicsFromKernelsBody(const RobotModel & rm);
 /// (passes::worldWrenchTorques).
 EmittedBody inverseDynamicsWrenchesBody(const RobotModel & rm);
 
-/// Reads q; fills `H` (composite rigid-body algorithm), plus diag(armature) when given (per dof).
-EmittedBody massMatrixBody(const RobotModel & rm, const std::vector<double> & armature = {});
+/// The mass matrix H (composite rigid-body algorithm, plus diag(armature) when given, per dof) as
+/// the body of `detail::mass_matrix_lower(q, put)`: reads q, calls put(r, c, H(r, c)) for every
+/// entry of the lower triangle (r >= c) that is not structurally zero, row by row; nnz: their count;
+/// slots: the initialiser lines of detail::mass_matrix_slot (nv x nv, row-major: the call index of
+/// H(r, c) = H(c, r), -1 for a structural zero).
+struct MassMatrixLower
+{
+  EmittedBody body;
+  int nnz = 0;
+  std::string slots;
+};
+MassMatrixLower massMatrixLowerBody(const RobotModel & rm, const std::vector<double> & armature = {});
 /// Options of the CRBA + LTDL forward dynamics (the plain header uses the defaults).
 struct FdOptions
 {

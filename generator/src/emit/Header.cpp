@@ -102,7 +102,7 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   v["fn_nonlinear_effects"] = nle.text;
   v["fn_velocity_torques"] = rneaBody(rm, {true, false, false}).text;
   v["fn_gravity_torques"] = rneaBody(rm, {false, false, true}).text;
-  v["fn_mass_matrix"] = massMatrixBody(rm).text;
+  massMatrixValues(v, rm, {});
   if(fd)
   {
     v["fn_forward_dynamics_crba"] = crba.text;
@@ -147,6 +147,15 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   return header;
 }
 
+void massMatrixValues(std::map<std::string, std::string> & v, const RobotModel & rm, const std::vector<double> & armature)
+{
+  const MassMatrixLower m = massMatrixLowerBody(rm, armature);
+  v["mass_matrix_lower"] = fillTemplate(templateText("mass_matrix_lower.hpp.in"),
+                                        {{"nnz", std::to_string(m.nnz)}, {"slots", m.slots}, {"body", m.body.text}},
+                                        "templates/mass_matrix_lower.hpp.in");
+  v["fn_mass_matrix"] = "  detail::mass_matrix_lower<S>(q, [&H](int r, int c, const S & x) RBDGEN_INLINE_LAMBDA { H(r, c) = H(c, r) = x; });";
+}
+
 std::string emitBatchHeader(const std::string & ns, const std::string & codeNamespace, const std::string & provenance,
                             const BatchFunctions & f)
 {
@@ -155,7 +164,8 @@ std::string emitBatchHeader(const std::string & ns, const std::string & codeName
                                            {"derivatives", f.derivatives},
                                            {"gravity", f.gravityTorques},
                                            {"bias", f.nonlinearEffects},
-                                           {"wrenches", f.wrenches}},
+                                           {"wrenches", f.wrenches},
+                                           {"mass_matrix_lower", f.massMatrixLower}},
                                           "templates/batch.hpp.in");
   return fillTemplate(
       text,

@@ -40,6 +40,11 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
                        const std::string & sourceHash, const std::string & options, bool derivatives = false,
                        const rbd::parsers::MimicCoupling & coupling = {});
 
+/// The values `mass_matrix_lower` (detail::mass_matrix_lower, its slot table) and `fn_mass_matrix`
+/// (mass_matrix's body: H from mass_matrix_lower) of a plain or scene header.
+void massMatrixValues(std::map<std::string, std::string> & values, const RobotModel & rm,
+                      const std::vector<double> & armature);
+
 /// Which functions the header under a batch header has (a plain header: all but the wrenches).
 struct BatchFunctions
 {
@@ -48,6 +53,7 @@ struct BatchFunctions
   bool gravityTorques = true;   ///< gravity_torques (a scene without gravity has none)
   bool nonlinearEffects = true; ///< nonlinear_effects (a scene without gravity and velocity terms has none)
   bool wrenches = false;        ///< a scene's external wrenches: an argument of ID, FD and their derivatives
+  bool massMatrixLower = true;  ///< detail::mass_matrix_lower (not when mimic joints are coupled: M is projected)
 };
 
 /// The batch header NS/batch.hpp (templates/batch.hpp.in) over the header of the same robot or scene:

@@ -23,13 +23,12 @@ void writePose(Block & b, const std::string & dst, const Xform & X)
   Vec3 rows[3];
   for(int r = 0; r < 3; ++r)
     for(int c = 0; c < 3; ++c) rows[r][c] = X.E(r, c);
-  b.line(fmt::format("{}.rotation << {};", dst, joined({&rows[0], &rows[1], &rows[2]})));
-  b.line(fmt::format("{}.translation << {};", dst, joined({&X.r})));
+  b.line(fmt::format("detail::set_pose({}, {});", dst, joined({&rows[0], &rows[1], &rows[2], &X.r})));
 }
 
 void writeMotion(Block & b, const std::string & dst, const Motion & m)
 {
-  b.line(fmt::format("{} << {};", dst, joined({&m.w, &m.v})));
+  b.line(fmt::format("detail::set_motion({}, {});", dst, joined({&m.w, &m.v})));
 }
 
 void writeColumn(Block & b, const std::string & dst, int col, const Vec3 & top, const Vec3 & bottom)

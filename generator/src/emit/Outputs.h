@@ -10,9 +10,9 @@ namespace rbdgen::emit
 
 using namespace rbdgen::cg;
 
-/// `<dst>.rotation(r, c) = ...; <dst>.translation(i) = ...;`
+/// `detail::set_pose(<dst>, rotation by rows, translation);`
 void writePose(Block & b, const std::string & dst, const Xform & X);
-/// `<dst>[i] = ...` for [w; v].
+/// `detail::set_motion(<dst>, w, v);`
 void writeMotion(Block & b, const std::string & dst, const Motion & m);
 /// `<dst>(r, col) = ...` for the non-zero entries of a 6-vector column [top; bottom].
 void writeColumn(Block & b, const std::string & dst, int col, const Vec3 & top, const Vec3 & bottom);

@@ -373,7 +373,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
   if(fd)
     v["fd_doc"] = "composite rigid-body algorithm for " + M + (genBias ? ", generalized_bias" : "") +
                 ", tree-sparse L^T D L factorisation";
-  v["fn_mass_matrix"] = massMatrixBody(rm, fx.armature).text;
+  massMatrixValues(v, rm, fx.armature);
   const Eigen::Vector3d g = gravity ? *fx.gravity : Eigen::Vector3d::Zero();
   if(gravity) v["fn_gravity_torques"] = rneaBody(rm, {false, false, true, g}).text;
   if(velocity) v["fn_velocity_torques"] = rneaBody(rm, {true, false, false, g}).text;
@@ -469,6 +469,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
   };
   if(contacts) v["fn_contact_forces"] = fmt::format("  res = independent::contact_forces<S>({});", kExpandedQA);
   v["fn_mass_matrix"] = fmt::format("  H = project_matrix<S>(independent::mass_matrix<S>({}));", kExpandedQ);
+  v["mass_matrix_lower"] = "";
   if(gravity) v["fn_gravity_torques"] = projected("tau", "gravity_torques", kExpandedQ);
   if(velocity) v["fn_velocity_torques"] = projected("tau", "velocity_torques", kExpandedQA);
   if(gravity || velocity) v["fn_nonlinear_effects"] = projected("tau", "nonlinear_effects", kExpandedQA);

@@ -62,7 +62,8 @@ std::string selectSections(const std::string & text, const std::map<std::string,
   while(std::getline(in, line))
   {
     ++lineNo;
-    const bool isOpen = line.rfind("{{#", 0) == 0, isClose = line.rfind("{{/", 0) == 0;
+    const bool isInverted = line.rfind("{{^", 0) == 0;
+    const bool isOpen = isInverted || line.rfind("{{#", 0) == 0, isClose = line.rfind("{{/", 0) == 0;
     if((isOpen || isClose) && line.size() > 5 && line.compare(line.size() - 2, 2, "}}") == 0)
     {
       const std::string name = line.substr(3, line.size() - 5);
@@ -71,7 +72,7 @@ std::string selectSections(const std::string & text, const std::map<std::string,
         const auto it = flags.find(name);
         if(it == flags.end()) throw TemplateError(where() + "section '" + name + "' has no flag");
         used.insert(name);
-        open.emplace_back(name, it->second);
+        open.emplace_back(name, it->second != isInverted);
       }
       else
       {

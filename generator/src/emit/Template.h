@@ -26,7 +26,8 @@ std::string fillTemplate(const std::string & text, const std::map<std::string, s
 
 /// Conditional sections: a line `{{#name}}` opens and a line `{{/name}}` closes a section (each
 /// alone on its line, nesting allowed); the section's lines are kept when flags.at(name) is true and
-/// removed otherwise. A section without a flag, a flag no section uses, or an unbalanced section is
+/// removed otherwise; `{{^name}}` opens an inverted section (kept when the flag is false), closed by
+/// `{{/name}}` too. A section without a flag, a flag no section uses, or an unbalanced section is
 /// an error. Run before fillTemplate (placeholders of removed sections need no value).
 std::string selectSections(const std::string & text, const std::map<std::string, bool> & flags,
                            const std::string & templateName);

@@ -5,7 +5,7 @@
 // Each iteration evaluates N states of a pool of 4 x 8192 seeded random states, starting N/4 states
 // further than the previous iteration (the inputs differ from one iteration to the next), into an
 // N-state output kept live. In cache: N such that the inputs and outputs of a call fit in 512 KB
-// (256 to 8192 states), the speed of the code rather than of the memory; CPU time of the process.
+// (32 to 8192 states), the speed of the code rather than of the memory; CPU time of the process.
 // Threads: N = 8192 (2048 for nv > 20), so that starting a thread costs little, wall-clock time (the
 // threads' work included). Counters: states/s, states/s per core (the rate / the threads), states per
 // CPU second of the process (all threads: what a second thread adds to the work, whatever the load).
@@ -37,11 +37,12 @@ std::size_t manyStates(const BatchRobotInfo & r)
 }
 
 /// States per call of the in-cache cells: inputs and outputs (double) in 512 KB, a power of 2 in
-/// [256, 8192].
+/// [32, 8192] (32: 4 packs of 8 doubles; talos_reduced's mass matrix, 11.6 KB a state, fits then: at
+/// 256 states its 3 MB went to L3, and the cell measured the memory of a machine shared with others).
 std::size_t cachedStates(const BatchRobotInfo & r, int outputSize)
 {
   const std::size_t bytes = sizeof(double) * static_cast<std::size_t>(r.nq + 2 * r.nv + outputSize);
-  std::size_t n = 256;
+  std::size_t n = 32;
   while(2 * n * bytes <= (512u << 10) && 2 * n <= 8192) n *= 2;
   return n;
 }

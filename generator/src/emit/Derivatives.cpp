@@ -186,21 +186,29 @@ void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv)
   for(std::size_t k = nv; k-- > 0;)
     for(int j = f.lambda[k]; j >= 0; j = f.lambda[static_cast<std::size_t>(j)])
       end[static_cast<std::size_t>(j)] = std::max(end[static_cast<std::size_t>(j)], end[k]);
+  // row `row` of X from column i on, over i's subtree: (length, pointer)
   const auto segment = [&](std::size_t row, std::size_t i) {
-    return fmt::format("X.row({}).template segment<{}>({})", row, end[i] - i + 1, i);
+    return std::make_pair(end[i] - i + 1, fmt::format("X.data() + {}", row * nv + i));
   };
-  b.comment("Minv = H^-1: row operations along the dof tree on the identity (L^T, D, then L)");
+  b.comment("Minv = H^-1: row operations along the dof tree on the identity (L^T, D, then L), X row-major");
   b.line("Eigen::Matrix<S, nv, nv, Eigen::RowMajor> X = Eigen::Matrix<S, nv, nv, Eigen::RowMajor>::Identity();");
   for(std::size_t i = nv; i-- > 0;)
     for(int j = f.lambda[i]; j >= 0; j = f.lambda[static_cast<std::size_t>(j)])
       if(!f.L[i][static_cast<std::size_t>(j)].isZero())
-        b.line(fmt::format("{} -= {} * {};", segment(static_cast<std::size_t>(j), i), Block::text(f.L[i][static_cast<std::size_t>(j)]),
-                           segment(i, i)));
-  for(std::size_t i = 0; i < nv; ++i) b.line(fmt::format("{} *= {};", segment(i, i), Block::text(f.invD[i])));
+      {
+        const auto [n, x] = segment(static_cast<std::size_t>(j), i);
+        b.line(fmt::format("detail::row_axpy<{}>({}, {}, {});", n, x, Block::text(f.L[i][static_cast<std::size_t>(j)]), segment(i, i).second));
+      }
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    const auto [n, x] = segment(i, i);
+    b.line(fmt::format("detail::row_scale<{}>({}, {});", n, x, Block::text(f.invD[i])));
+  }
   for(std::size_t i = 0; i < nv; ++i)
     for(int j = f.lambda[i]; j >= 0; j = f.lambda[static_cast<std::size_t>(j)])
       if(!f.L[i][static_cast<std::size_t>(j)].isZero())
-        b.line(fmt::format("X.row({}) -= {} * X.row({});", i, Block::text(f.L[i][static_cast<std::size_t>(j)]), j));
+        b.line(fmt::format("detail::row_axpy<nv>(X.data() + {}, {}, X.data() + {});", i * nv, Block::text(f.L[i][static_cast<std::size_t>(j)]),
+                           static_cast<std::size_t>(j) * nv));
   // The products go to locals of this function, then to d: written straight into d (the caller's
   // return slot), their stores 4K-aliased the blocked kernels' loads at some caller stack offsets
   // (talos_reduced: 23.8-32.5 us over 16 offsets, 22.1-22.7 us with the locals).

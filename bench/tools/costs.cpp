@@ -68,12 +68,12 @@ int main(int argc, char ** argv)
       const rbd::parsers::ParserResult robot = rbd::parsers::fromUrdfFile(urdf, opt);
       const rbdgen::RobotModel rm = rbdgen::robotModelFromUrdf(robot);
       const long n = rm.nv;
-      const auto nle = emit::rneaBody(rm, {true, false, true, false});
+      const auto nle = emit::rneaBody(rm, {true, false, true});
       const auto kin = emit::kinematicsBody(rm);
       row(name, rm.nv, "fk", {emit::forwardKinematicsBody(rm)});
       row(name, rm.nv, "fk_vel", {emit::bodyVelocitiesBody(rm)});
-      row(name, rm.nv, "id", {emit::rneaBody(rm, {true, true, true, false})}, 93 * n - 69, 81 * n - 66);
-      row(name, rm.nv, "gravity", {emit::rneaBody(rm, {false, false, true, false})});
+      row(name, rm.nv, "id", {emit::rneaBody(rm, {true, true, true})}, 93 * n - 69, 81 * n - 66);
+      row(name, rm.nv, "gravity", {emit::rneaBody(rm, {false, false, true})});
       row(name, rm.nv, "nle", {nle});
       row(name, rm.nv, "mass_matrix", {emit::massMatrixLowerBody(rm).body}, 10 * n * n + 22 * n - 32, 6 * n * n + 37 * n - 43);
       row(name, rm.nv, "fd_crba", {emit::forwardDynamicsBody(rm), nle});

@@ -116,8 +116,7 @@ Xform emitPathLoop(Block & b, const RobotModel & rm, const std::string & q,
   b.line("S walk_angles[detail::max_support_depth] = {};");
   b.line("for(int i = 0; i < walk_depth; ++i)");
   b.line(fmt::format("  walk_angles[i] = {}[detail::angle_index[static_cast<std::size_t>(walk_path[static_cast<std::size_t>(i)])]];", q));
-  b.line("const auto walk_sc = detail::sincos_all(walk_angles);");
-  b.line("static_cast<void>(walk_sc); // unused when no joint on any path has an angle");
+  b.line("[[maybe_unused]] const auto walk_sc = detail::sincos_all(walk_angles); // (no angle on any path: unused)");
   b.comment("world pose of the body reached so far: walk_E (world to body), walk_o (origin, world)");
   b.line("Eigen::Matrix<S, 3, 3> walk_E = Eigen::Matrix<S, 3, 3>::Identity();");
   b.line("Eigen::Matrix<S, 3, 1> walk_o = Eigen::Matrix<S, 3, 1>::Zero();");

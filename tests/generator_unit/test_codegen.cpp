@@ -79,7 +79,7 @@ TEST(Folding, UnusedLocalsAreRemoved)
   const Scalar x = Scalar::var("x");
   const Scalar used = b.sum({Term{2.0, {x}}}, "used");
   b.sum({Term{3.0, {x}}}, "unused");
-  b.line("out = " + Block::text(used) + ";");
+  b.line("out = " + Block::text(used) + " * " + Block::text(used) + ";"); // (read twice: not inlined)
   const std::string text = b.str("");
   EXPECT_NE(text.find("const S used = S(2) * x;"), std::string::npos);
   EXPECT_EQ(text.find("unused"), std::string::npos);

@@ -1,4 +1,5 @@
 #include "Expr.h"
+#include "InlineSingleUse.h"
 #include "SinCosBatch.h"
 
 #include <algorithm>
@@ -161,17 +162,22 @@ void Block::line(const std::string & text)
 
 std::string Block::str(const std::string & indent) const
 {
-  // Dead-code elimination: a `const S x = ...;` statement is kept when x is read by a kept line.
+  // Dead-code elimination, from the last line up.
   std::vector<bool> keep(lines_.size(), true);
   std::set<std::string> used;
   for(std::size_t k = lines_.size(); k-- > 0;)
   {
     const std::string & l = lines_[k];
     std::string rhs = l;
-    if(l.rfind("const S ", 0) == 0)
+    // `const S x = ...;` and a shared pass's results `[[maybe_unused]] const auto x = detail::f<S>(...);`
+    // (pure, always-inline functions) are kept only when x is read
+    const std::string passResult = "[[maybe_unused]] const auto ";
+    const bool pass = l.rfind(passResult, 0) == 0 && l.find(" = detail::") != std::string::npos && l.find("<S>(") != std::string::npos;
+    if(l.rfind("const S ", 0) == 0 || pass)
     {
       const auto eq = l.find(" = ");
-      const std::string name = l.substr(8, eq - 8);
+      const std::size_t from = pass ? passResult.size() : 8;
+      const std::string name = l.substr(from, eq - from);
       if(!used.count(name))
       {
         keep[k] = false;
@@ -185,6 +191,19 @@ std::string Block::str(const std::string & indent) const
   for(std::size_t k = 0; k < lines_.size(); ++k)
     if(keep[k]) kept.push_back(lines_[k]);
   if(batchSinCos_) kept = rbdgen::cg::batchSinCos(kept);
+  kept = inlineSingleUse(kept, indent.size() < 120 ? 120 - indent.size() : 0);
+  // A section comment (`// j3: ...`) directly followed by the same comment of the next joint heads
+  // no code (its statements were shared or folded away): dropped.
+  auto afterTag = [](const std::string & l) { return l.substr(std::min(l.find(' ', 3), l.size())); };
+  std::vector<std::string> sections;
+  for(std::size_t k = 0; k < kept.size(); ++k)
+  {
+    const bool comment = kept[k].rfind("// ", 0) == 0;
+    if(comment && k + 1 < kept.size() && kept[k + 1].rfind("// ", 0) == 0 && afterTag(kept[k]) == afterTag(kept[k + 1]))
+      continue;
+    sections.push_back(kept[k]);
+  }
+  kept = std::move(sections);
   std::string out;
   for(const std::string & l : kept) out += indent + l + "\n";
   return out;

@@ -55,7 +55,8 @@ public:
   static std::string literal(double v);
 
   const std::vector<std::string> & lines() const { return lines_; }
-  /// Statements joined with the given indentation; unused locals are removed first.
+  /// Statements joined with the given indentation; unused locals are removed first, then single-use
+  /// temporaries are folded into the expression that reads them (InlineSingleUse.h).
   std::string str(const std::string & indent) const;
   /// Floating-point operations emitted so far (multiplications, additions, other calls).
   long mults() const { return mults_; }

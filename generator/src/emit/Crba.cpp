@@ -150,7 +150,24 @@ EmittedBody forwardDynamicsBody(const RobotModel & rm, const FdOptions & opt)
 {
   Block b;
   const auto nv = static_cast<std::size_t>(rm.nv);
-  std::vector<std::vector<Scalar>> L = emitMassMatrix(b, rm, opt.armature);
+  // With massMatrixLower, the columns go to a scratch block: only H's constant entries are kept.
+  Block columns;
+  std::vector<std::vector<Scalar>> L = emitMassMatrix(opt.massMatrixLower ? columns : b, rm, opt.armature);
+  if(opt.massMatrixLower)
+  {
+    // H's entries from the header's mass_matrix_lower, slot by slot as massMatrixLowerBody numbers them
+    b.line("S Hl[detail::mass_matrix_nnz];");
+    b.line("detail::mass_matrix_lower<S>(q, [&Hl](int r, int c, const S & x) RBDGEN_INLINE_LAMBDA { "
+           "Hl[detail::mass_matrix_slot[static_cast<std::size_t>(r * nv + c)]] = x; });");
+    int slot = 0;
+    for(std::size_t r = 0; r < nv; ++r)
+      for(std::size_t c = 0; c <= r; ++c)
+      {
+        if(L[r][c].isZero()) continue;
+        if(!L[r][c].isConst()) L[r][c] = Scalar::var(fmt::format("Hl[{}]", slot));
+        ++slot;
+      }
+  }
   // Right-hand side: tau - C.
   std::vector<Scalar> x(nv);
   if(opt.biasCall.empty())

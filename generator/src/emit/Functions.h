@@ -47,6 +47,8 @@ EmittedBody rneaBody(const RobotModel & rm, const RneaTerms & terms);
 /// The body of detail::inverse_dynamics_from: inverse dynamics under gravity from the header's
 /// shared kernels `K` (a parameter), alpha and alphaD; fills `tau`.
 EmittedBody inverseDynamicsFromKernelsBody(const RobotModel & rm);
+/// `S(9.81)`: the magnitude of a plain header's gravity, as detail::inverse_dynamics_from takes it.
+std::string gravityLiteral();
 /// Reads q, alpha, alphaD and `fext[b]` (a wrench on each link, world coordinates at the world
 /// origin); declares and fills `tau`: detail::inverse_dynamics_from minus the wrenches' torques
 /// (passes::worldWrenchTorques).
@@ -70,6 +72,8 @@ struct FdOptions
   /// Statement right-hand side giving the bias C (Tangent<S>) subtracted from tau; empty: no bias.
   std::string biasCall = "nonlinear_effects<S>(q, alpha)";
   std::vector<double> armature; ///< per dof, added to the diagonal of H (empty: none)
+  /// H from the header's detail::mass_matrix_lower (same armature) instead of its own CRBA columns.
+  bool massMatrixLower = false;
 };
 /// Reads q, alpha, tau; fills `alphaD` from (H + diag(armature)) alphaD = tau - C (H by CRBA, C by
 /// `biasCall`, tree-sparse L^T D L factorisation).
@@ -104,6 +108,9 @@ void writePointColumns(cg::Block & b, const MovingJoint & mj, const passes::Join
                        const cg::Vec3 & p);
 /// Reads `kin` (Kinematics<S>) and `body` (Body); fills `J` (6 x nv, world axes at the link origin).
 EmittedBody jacobianBody(const RobotModel & rm);
+/// Reads `body`, q; fills the columns of `body`'s support path in `J` (world axes, at the world
+/// origin) and the link's world pose in `link_E`, `link_o` (the body of detail::support_jacobian).
+EmittedBody supportJacobianBody(const RobotModel & rm);
 /// Reads `body`, q (and `point`, link coordinates, when withPoint); fills `J` (6 x nv, world axes at
 /// the link origin or the point) computing only the link's support path.
 EmittedBody jacobianFromConfigBody(const RobotModel & rm, bool withPoint);
@@ -118,8 +125,6 @@ EmittedBody bodyVelocitiesBody(const RobotModel & rm);
 EmittedBody bodyAccelerationsBody(const RobotModel & rm);
 /// Reads `body`, `kin`, alpha; fills `res` (Jdot alpha at the link origin, world axes).
 EmittedBody jacobianDotTimesAlphaBody(const RobotModel & rm);
-/// Reads `body`, q, alpha; fills `res` as above, computing only the link's support path.
-EmittedBody jacobianDotTimesAlphaFromConfigBody(const RobotModel & rm);
 /// Reads `kin`; fills `J` (3 x nv CoM Jacobian).
 EmittedBody comJacobianBody(const RobotModel & rm);
 /// Reads q; fills `A` (6 x nv centroidal momentum matrix, [angular about the CoM; linear]).

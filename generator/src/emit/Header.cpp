@@ -73,9 +73,10 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   // From here on, the passes that run over all joints are emitted once (detail::) and called.
   passes::SharedPasses shared(rm);
   const passes::SharedPasses::Scope sharing(shared);
-  const EmittedBody crba = forwardDynamicsBody(rm);
+  FdOptions crbaOptions;
+  crbaOptions.massMatrixLower = true;
+  const EmittedBody crba = forwardDynamicsBody(rm, crbaOptions);
   const EmittedBody aba = abaBody(rm);
-  const EmittedBody nle = rneaBody(rm, {true, false, true});
   auto flops = [](const OpCount & c) { return c.mults + c.adds + 20 * c.calls; };
   const long crbaCost = flops(crbaAlone.ops) + flops(nleAlone.ops), abaCost = flops(abaAlone.ops);
   // Measured (bench/results): at equal counts ABA runs faster (CRBA's count leaves out filling and
@@ -99,8 +100,11 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   shared.kernels(); // (detail::inverse_dynamics_from takes them, even when no joint has a kernel entry)
   v["fn_inverse_dynamics_from"] = inverseDynamicsFromKernelsBody(rm).text;
   v["fn_inverse_dynamics_fext"] = inverseDynamicsWrenchesBody(rm).text;
-  v["fn_nonlinear_effects"] = nle.text;
-  v["fn_velocity_torques"] = rneaBody(rm, {true, false, false}).text;
+  // nonlinear_effects and velocity_torques: the same RNEA with alphaD = 0 (and g = 0)
+  v["gravity"] = gravityLiteral();
+  const std::string rneaAtRest = "  detail::inverse_dynamics_from<S>(detail::joint_kernels<S>(q), alpha, Tangent<S>::Zero(), {}, tau);\n";
+  v["fn_nonlinear_effects"] = fmt::format(fmt::runtime(rneaAtRest), gravityLiteral());
+  v["fn_velocity_torques"] = fmt::format(fmt::runtime(rneaAtRest), "S(0)");
   v["fn_gravity_torques"] = rneaBody(rm, {false, false, true}).text;
   massMatrixValues(v, rm, {});
   if(fd)
@@ -120,8 +124,7 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
         pairs);
   }
   v["fn_jacobian"] = jacobianBody(rm).text;
-  v["fn_jacobian_q_point"] = jacobianFromConfigBody(rm, true).text;
-  v["fn_jacobian_dot_times_alpha_q"] = jacobianDotTimesAlphaFromConfigBody(rm).text;
+  v["fn_support_jacobian"] = supportJacobianBody(rm).text;
   v["support_tables"] = passes::supportPathTables(rm);
   v["fn_center_of_mass"] = centerOfMassBody(rm).text;
   v["fn_center_of_mass_q"] = centerOfMassFromConfigBody(rm).text;

@@ -55,6 +55,16 @@ void writePointColumns(Block & b, const MovingJoint & mj, const JointKernel & K,
   }
 }
 
+EmittedBody supportJacobianBody(const RobotModel & rm)
+{
+  Block b;
+  emitPathLoop(b, rm, "q", [&](int k, const JointKernel & K, const Xform & X0) {
+    writeOriginColumns(b, rm.joints[static_cast<std::size_t>(k)], K, X0);
+  });
+  emitLinkPoseFromWalk(b, rm, true, false);
+  return finish(b);
+}
+
 EmittedBody jacobianBody(const RobotModel & rm)
 {
   // Column of dof d of joint k (world axes, at the link origin p):
@@ -62,8 +72,7 @@ EmittedBody jacobianBody(const RobotModel & rm)
   Block b;
   b.line("const Eigen::Matrix<S, 3, 1> p = kin.pose[detail::at(body)].translation;");
   const Vec3 p = vec3Var("p");
-  emitJumpWalk(b, rm, "jac", [&](int k, const MovingJoint & mj) {
-    b.comment(fmt::format("joint '{}': its columns", mj.name));
+  emitJumpWalk(b, rm, "jac", "its columns", [&](int k, const MovingJoint & mj) {
     // S depends on q only for backward multi-dof joints
     writePointColumns(b, mj, emitJointKernel(b, mj, "kin.q"), kinFrame(k), p);
   });
@@ -129,8 +138,7 @@ EmittedBody jacobianDotTimesAlphaBody(const RobotModel & rm)
   b.line("const Eigen::Matrix<S, 3, 1> p = kin.pose[detail::at(body)].translation;");
   b.line("Eigen::Matrix<S, 6, 1> U = Eigen::Matrix<S, 6, 1>::Zero(), A = Eigen::Matrix<S, 6, 1>::Zero();");
   const Motion U{vec3Var("U", 0), vec3Var("U", 3)}, A{vec3Var("A", 0), vec3Var("A", 3)};
-  emitJumpWalk(b, rm, "jd", [&](int k, const MovingJoint & mj) {
-    b.comment(fmt::format("joint '{}': A += C x U, U += C", mj.name));
+  emitJumpWalk(b, rm, "jd", "A += C x U, U += C", [&](int k, const MovingJoint & mj) {
     const JointKernel K = emitJointKernel(b, mj, "kin.q");
     const Motion vJ = jointMotion(b, K, "alpha", mj.vIndex, mj.tag + "_vJ");
     const Motion C = invApply(b, kinFrame(k), vJ, mj.tag + "_C");
@@ -138,24 +146,6 @@ EmittedBody jacobianDotTimesAlphaBody(const RobotModel & rm)
     accumulate(b, "U", C);
   });
   writePointAcceleration(b, vec3Var("p"), U, A);
-  return finish(b);
-}
-
-EmittedBody jacobianDotTimesAlphaFromConfigBody(const RobotModel & rm)
-{
-  // As above, root to leaf along the path: V += C_k after A += V x C_k (V the sum rootward of k).
-  Block b;
-  b.line("Eigen::Matrix<S, 6, 1> V = Eigen::Matrix<S, 6, 1>::Zero(), A = Eigen::Matrix<S, 6, 1>::Zero();");
-  const Motion V{vec3Var("V", 0), vec3Var("V", 3)};
-  emitPathLoop(b, rm, "q", [&](int k, const JointKernel & K, const Xform & X0) {
-    const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
-    const Motion vJ = jointMotion(b, K, "alpha", mj.vIndex, mj.tag + "_vJ");
-    const Motion C = invApply(b, X0, vJ, mj.tag + "_C");
-    accumulate(b, "A", cross(b, V, C, mj.tag + "_VxC"));
-    accumulate(b, "V", C);
-  });
-  declarePoint(b, rm, false);
-  writePointAcceleration(b, vec3Var("p"), V, {vec3Var("A", 0), vec3Var("A", 3)});
   return finish(b);
 }
 

@@ -15,13 +15,15 @@ using namespace rbdgen::passes;
 namespace
 {
 
-void emitRnea(PassContext & ctx, const RneaTerms & terms)
+// gravityParameter: non-empty, gravity's magnitude is that parameter (terms.gravityVector its direction)
+void emitRnea(PassContext & ctx, const RneaTerms & terms, const std::string & gravityParameter = "")
 {
   MotionRequest req;
   req.velocity = terms.velocity;
   req.acceleration = true;
   req.alphaD = terms.acceleration;
   if(terms.gravity) req.gravity = terms.gravityVector;
+  req.gravityParameter = gravityParameter;
   const MotionState m = forwardMotion(ctx, req, ctx.allJoints());
   std::vector<Force> f = inertialForces(ctx, m, terms.velocity, ctx.allJoints());
   backwardForces(ctx, f, writeTorques(ctx, "tau"));
@@ -42,8 +44,13 @@ EmittedBody inverseDynamicsFromKernelsBody(const RobotModel & rm)
   Block b;
   PassContext ctx(b, rm);
   ctx.kernelsFromCaller();
-  emitRnea(ctx, {});
+  emitRnea(ctx, {}, "g");
   return finish(b);
+}
+
+std::string gravityLiteral()
+{
+  return Block::literal(RneaTerms{}.gravityVector.norm());
 }
 
 EmittedBody inverseDynamicsWrenchesBody(const RobotModel & rm)
@@ -58,7 +65,7 @@ EmittedBody inverseDynamicsWrenchesBody(const RobotModel & rm)
   const MotionState m = forwardMotion(ctx, MotionRequest::make(true, false), ctx.allJoints());
   ctx.kernel(0); // (declares K)
   b.line("Tangent<S> tau;");
-  b.line("detail::inverse_dynamics_from<S>(K, alpha, alphaD, tau);");
+  b.line(fmt::format("detail::inverse_dynamics_from<S>(K, alpha, alphaD, {}, tau);", gravityLiteral()));
   std::vector<Force> w;
   for(std::size_t i = 0; i < rm.bodies.size(); ++i)
   {

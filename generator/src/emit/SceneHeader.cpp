@@ -402,6 +402,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
     FdOptions fo;
     fo.biasCall = genBias ? "generalized_bias<S>(q, alpha" + wrenchArg + ")" : "";
     fo.armature = fx.armature;
+    fo.massMatrixLower = true; // (massMatrixValues above, same armature)
     v["fn_forward_dynamics"] = forwardDynamicsBody(rm, fo).text;
     v["integrate"] = J.integrate;
     v["wrench_arg"] = wrenchArg;

@@ -28,7 +28,13 @@ MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const st
     m.sharedVelocities = true;
   }
   Motion a0 = Motion::zero();
-  if(req.gravity)
+  if(req.gravity && !req.gravityParameter.empty())
+  {
+    const Eigen::Vector3d up = -req.gravity->normalized();
+    for(int c = 0; c < 3; ++c)
+      a0.v[c] = b.sum({Term{up[c], {Scalar::var(req.gravityParameter)}}}, "a0_v_" + std::string(1, "xyz"[c]));
+  }
+  else if(req.gravity)
     for(int c = 0; c < 3; ++c) a0.v[c] = Scalar::constant(-(*req.gravity)[c]);
   for(int k : joints)
   {

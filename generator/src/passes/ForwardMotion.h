@@ -25,6 +25,9 @@ struct MotionRequest
   bool alphaD = true;            ///< a_k includes S_k alphaD_k (false: alphaD = 0)
   bool velocityProducts = true;  ///< a_k includes v_k x vJ_k (when velocity)
   std::optional<Eigen::Vector3d> gravity; ///< world, m/s^2; nullopt: no gravity in a_k
+  /// When set, the magnitude of gravity is this emitted scalar (m/s^2, a parameter of the function:
+  /// one body serves with and without gravity) and `gravity` gives only its direction.
+  std::string gravityParameter;
 
   static MotionRequest make(bool poses, bool velocity, bool acceleration = false)
   {

@@ -1,6 +1,7 @@
 #include "SharedPasses.h"
 
 #include <cctype>
+#include <map>
 #include <set>
 
 #include <fmt/format.h>
@@ -56,18 +57,42 @@ std::string exportPass(Block & b, const std::vector<Scalar *> & outs, const std:
 {
   std::vector<std::string> members;
   std::set<std::string> seen;
+  std::map<std::string, Scalar> inputs; // an input read directly (e.g. q[5]), once per input
   for(Scalar * s : outs)
   {
     if(s->isConst()) continue;
-    // an input read directly (e.g. q[5]) becomes a member too
-    const Scalar local = isIdentifier(s->name()) ? *s : b.def(s->name(), "in");
-    if(seen.insert(local.name()).second)
+    auto found = inputs.find(s->name());
+    if(found == inputs.end() && !isIdentifier(s->name()))
     {
-      members.push_back(local.name());
-      b.line(fmt::format("o.{0} = {0};", local.name()));
+      std::string hint = s->name(); // alpha[3] -> alpha_3
+      for(char & c : hint)
+        if(!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+      while(!hint.empty() && hint.back() == '_') hint.pop_back();
+      found = inputs.emplace(s->name(), b.def(s->name(), hint)).first;
     }
+    const Scalar local = found == inputs.end() ? *s : found->second;
+    if(seen.insert(local.name()).second) members.push_back(local.name());
     *s = Scalar::var(var + "." + local.name());
   }
+  // the results as one aggregate, members in declaration order
+  std::string ret = "return {", retLine = ret;
+  for(std::size_t i = 0; i < members.size(); ++i)
+  {
+    const std::string item = members[i] + (i + 1 < members.size() ? "," : "");
+    if(retLine.size() + item.size() > 112)
+    {
+      ret += "\n    ";
+      retLine = "    ";
+    }
+    else if(i > 0)
+    {
+      ret += " ";
+      retLine += " ";
+    }
+    ret += item;
+    retLine += item;
+  }
+  b.line(ret + "};");
   std::string decl;
   std::string line = "  S";
   for(std::size_t i = 0; i < members.size(); ++i)
@@ -83,8 +108,8 @@ std::string exportPass(Block & b, const std::vector<Scalar *> & outs, const std:
   if(members.empty()) line = "  char none = 0;";
   decl += line + "\n";
   return fmt::format("/// {}\ntemplate<class S>\nstruct {}\n{{\n{}}};\n\n"
-                     "template<class S>\nRBDGEN_INLINE {}<S> {}({}) noexcept\n{{\n  {}<S> o;\n{}  return o;\n}}\n",
-                     doc, structName, decl, structName, fn, params, structName, b.str("  "));
+                     "template<class S>\nRBDGEN_INLINE {}<S> {}({}) noexcept\n{{\n{}}}\n",
+                     doc, structName, decl, structName, fn, params, b.str("  "));
 }
 
 } // namespace

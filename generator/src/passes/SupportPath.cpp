@@ -86,7 +86,7 @@ std::string supportPathTables(const RobotModel & rm)
                      count.empty() ? "0" : count);
 }
 
-void emitJumpWalk(Block & b, const RobotModel & rm, const std::string & prefix,
+void emitJumpWalk(Block & b, const RobotModel & rm, const std::string & prefix, const std::string & what,
                   const std::function<void(int k, const MovingJoint & mj)> & jointBlock)
 {
   auto label = [&](int k) {
@@ -94,15 +94,32 @@ void emitJumpWalk(Block & b, const RobotModel & rm, const std::string & prefix,
   };
   b.line("switch(body)");
   b.line("{");
-  for(const BodyFrame & bf : rm.bodies) b.line(fmt::format("case Body::{}: goto {};", bf.ident, label(bf.owner)));
+  // the links owned by one joint share a line: case Body::a: case Body::b: goto <owner>;
+  std::vector<int> owners;
+  for(const BodyFrame & bf : rm.bodies)
+    if(std::find(owners.begin(), owners.end(), bf.owner) == owners.end()) owners.push_back(bf.owner);
+  for(int owner : owners)
+  {
+    std::string text, line;
+    for(const BodyFrame & bf : rm.bodies)
+    {
+      if(bf.owner != owner) continue;
+      const std::string item = fmt::format("case Body::{}:", bf.ident);
+      if(!line.empty() && line.size() + item.size() > 100)
+      {
+        text += line + "\n  ";
+        line.clear();
+      }
+      line += (line.empty() ? "" : " ") + item;
+    }
+    b.line(text + line + fmt::format(" goto {};", label(owner)));
+  }
   b.line("}");
   for(std::size_t k = rm.joints.size(); k-- > 0;)
   {
-    b.line(label(static_cast<int>(k)) + ":");
-    b.line("{");
+    b.line(fmt::format("{}: {{ // joint '{}': {}", label(static_cast<int>(k)), rm.joints[k].name, what));
     jointBlock(static_cast<int>(k), rm.joints[k]);
-    b.line("}");
-    b.line(fmt::format("goto {};", label(rm.joints[k].parent)));
+    b.line(fmt::format("}} goto {};", label(rm.joints[k].parent)));
   }
   b.line(label(-1) + ":;");
 }
@@ -131,16 +148,14 @@ Xform emitPathLoop(Block & b, const RobotModel & rm, const std::string & q,
   for(std::size_t k = 0; k < rm.joints.size(); ++k)
   {
     const MovingJoint & mj = rm.joints[k];
-    b.line(fmt::format("case {}: // joint '{}' ({})", k, mj.name, describeJoint(mj)));
-    b.line("{");
+    b.line(fmt::format("case {}: {{ // joint '{}' ({})", k, mj.name, describeJoint(mj)));
     const JointKernel K = emitJointKernel(b, mj, q, angles);
     const Xform Xt = constantXform(mj.Xt);
     // X_0_k = X_j X_T X_0_p, X_0_p = identity for a joint on the world
     const Xform X0 = compose(b, K.Xj, mj.parent < 0 ? Xt : compose(b, Xt, walk, mj.tag + "_X0t"), mj.tag + "_X0");
     jointBlock(static_cast<int>(k), K, X0);
     assignPose(b, "walk_E", "walk_o", X0);
-    b.line("break;");
-    b.line("}");
+    b.line("} break;");
   }
   b.line("default: break;");
   b.line("}");
@@ -148,11 +163,11 @@ Xform emitPathLoop(Block & b, const RobotModel & rm, const std::string & q,
   return walk;
 }
 
-void emitLinkPoseFromWalk(Block & b, const RobotModel & rm, bool rotation)
+void emitLinkPoseFromWalk(Block & b, const RobotModel & rm, bool rotation, bool declare)
 {
   b.comment("the link's world pose from its owner's: E_link = E_c walk_E, o_link = walk_o + walk_E^T r_c");
-  if(rotation) b.line("Eigen::Matrix<S, 3, 3> link_E = walk_E;");
-  b.line("Eigen::Matrix<S, 3, 1> link_o = walk_o;");
+  if(rotation) b.line(declare ? "Eigen::Matrix<S, 3, 3> link_E = walk_E;" : "link_E = walk_E;");
+  b.line(declare ? "Eigen::Matrix<S, 3, 1> link_o = walk_o;" : "link_o = walk_o;");
   b.line("switch(body)");
   b.line("{");
   const Xform walk = poseVars("walk_E", "walk_o");
@@ -160,14 +175,12 @@ void emitLinkPoseFromWalk(Block & b, const RobotModel & rm, bool rotation)
   {
     const sva::PTransformd & C = bf.X_owner_link;
     if(C.translation().isZero(0.0) && (!rotation || C.rotation().isIdentity(0.0))) continue;
-    b.line(fmt::format("case Body::{}:", bf.ident));
-    b.line("{");
+    b.line(fmt::format("case Body::{}: {{", bf.ident));
     const Xform X = compose(b, constantXform(C), walk, "L_" + bf.ident);
     if(rotation) assignPose(b, "link_E", "link_o", X);
     else
       for(int i = 0; i < 3; ++i) b.line(fmt::format("link_o({}) = {};", i, Block::text(X.r[i])));
-    b.line("break;");
-    b.line("}");
+    b.line("} break;");
   }
   b.line("default: break;");
   b.line("}");

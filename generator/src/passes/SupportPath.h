@@ -22,8 +22,9 @@ std::string supportPathTables(const RobotModel & rm);
 
 /// Leaf to root from link `body` (a run-time value named `body`):
 ///   switch(body) { case Body::<link>: goto <prefix>_<owner>; ... }
-///   <prefix>_<joint>: { jointBlock(k) } goto <prefix>_<parent>; ... <prefix>_done:;
-void emitJumpWalk(Block & b, const RobotModel & rm, const std::string & prefix,
+///   <prefix>_<joint>: { // joint '<name>': <what>
+///   jointBlock(k) } goto <prefix>_<parent>; ... <prefix>_done:;
+void emitJumpWalk(Block & b, const RobotModel & rm, const std::string & prefix, const std::string & what,
                   const std::function<void(int k, const MovingJoint & mj)> & jointBlock);
 
 /// Root to leaf along the support path of link `body` (a run-time value), reading q from `q`.
@@ -35,7 +36,8 @@ Xform emitPathLoop(Block & b, const RobotModel & rm, const std::string & q,
                    const std::function<void(int k, const JointKernel & K, const Xform & X0)> & jointBlock);
 
 /// The world origin of link `body` (`link_o`) and, with rotation, its rotation (`link_E`), from the
-/// pose of its owner at the end of a path loop: a switch over the links, constants folded.
-void emitLinkPoseFromWalk(Block & b, const RobotModel & rm, bool rotation);
+/// pose of its owner at the end of a path loop: a switch over the links, constants folded; declared
+/// as locals, or (declare false) assigned to the caller's.
+void emitLinkPoseFromWalk(Block & b, const RobotModel & rm, bool rotation, bool declare = true);
 
 } // namespace rbdgen::passes

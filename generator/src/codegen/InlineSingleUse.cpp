@@ -1,0 +1,272 @@
+#include "InlineSingleUse.h"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+
+namespace rbdgen::cg
+{
+
+namespace
+{
+
+bool isStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool isPart(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+/// The code of a line, without a trailing `// comment`.
+std::string codeOf(const std::string & l)
+{
+  const auto p = l.find("//");
+  return p == std::string::npos ? l : l.substr(0, p);
+}
+
+/// `const S name = rhs;` -> name, rhs.
+bool parseDef(const std::string & l, std::string & name, std::string & rhs)
+{
+  if(l.rfind("const S ", 0) != 0 || l.empty() || l.back() != ';') return false;
+  const auto eq = l.find(" = ");
+  if(eq == std::string::npos) return false;
+  name = l.substr(8, eq - 8);
+  rhs = l.substr(eq + 3, l.size() - eq - 4);
+  return !name.empty() && std::all_of(name.begin(), name.end(), isPart);
+}
+
+/// Positions of `name` read as a local in `text` (not a member after `.`, not part of a longer name).
+template<typename F>
+void forEachLocal(const std::string & text, F && f)
+{
+  for(std::size_t i = 0; i < text.size();)
+  {
+    if(isStart(text[i]) && (i == 0 || !isPart(text[i - 1])))
+    {
+      std::size_t j = i;
+      while(j < text.size() && isPart(text[j])) ++j;
+      const bool member = i > 0 && text[i - 1] == '.';
+      if(!member) f(i, j);
+      i = j;
+    }
+    else ++i;
+  }
+}
+
+/// Lines a read can move across: declarations (they write nothing already declared) and comments.
+bool isTransparent(const std::string & l)
+{
+  return l.rfind("const ", 0) == 0 || l.rfind("[[maybe_unused]] const ", 0) == 0 || l.rfind("//", 0) == 0;
+}
+
+/// The object an assignment `x = ...;`, `x(i, j) -= ...;`, `x[i] = ...;`, `x.m = ...;` writes
+/// ("x"), or "" for any other line (a call, a loop, a brace: nothing can move across it).
+std::string writtenObject(const std::string & l)
+{
+  if(l.empty() || !isStart(l[0])) return "";
+  std::size_t i = 0;
+  while(i < l.size() && isPart(l[i])) ++i;
+  const std::string base = l.substr(0, i);
+  for(const char * kw : {"for", "if", "while", "switch", "case", "do", "else", "return", "default", "break"})
+    if(base == kw) return "";
+  int depth = 0;
+  for(; i < l.size(); ++i)
+  {
+    const char c = l[i];
+    if(c == '(' || c == '[') ++depth;
+    else if(c == ')' || c == ']') --depth;
+    else if(depth == 0 && c == '=') return i + 1 < l.size() && l[i + 1] != '=' ? base : "";
+    else if(depth == 0 && !(c == ' ' || c == '.' || isPart(c) || c == '+' || c == '-' || c == '*' || c == '/')) return "";
+  }
+  return "";
+}
+
+/// Lines a value can be substituted into: one statement evaluated once, where it stands.
+bool isPlainStatement(const std::string & l)
+{
+  for(const char * kw : {"for", "if", "while", "switch", "case", "do", "else", "return", "default"})
+  {
+    const std::string k(kw);
+    if(l.rfind(k, 0) == 0 && (l.size() == k.size() || !isPart(l[k.size()]))) return false;
+  }
+  const std::string code = codeOf(l);
+  return code.find('{') == std::string::npos && code.find('}') == std::string::npos && code.find('?') == std::string::npos;
+}
+
+enum class Kind { Atom, Product, Sum };
+
+/// Shape of an expression at its top level (outside brackets).
+Kind kindOf(const std::string & e)
+{
+  int depth = 0;
+  bool product = false;
+  for(std::size_t i = 0; i < e.size(); ++i)
+  {
+    const char c = e[i];
+    if(c == '(' || c == '[') ++depth;
+    else if(c == ')' || c == ']') --depth;
+    else if(depth == 0 && i > 0 && e[i - 1] == ' ' && i + 1 < e.size() && e[i + 1] == ' ')
+    {
+      if(c == '+' || c == '-') return Kind::Sum;
+      if(c == '*' || c == '/') product = true;
+    }
+  }
+  return product ? Kind::Product : Kind::Atom;
+}
+
+enum class Left { Start, Binary, Unary, Mul, Other };
+enum class Right { End, SumOp, MulOp, Other };
+
+Left leftOf(const std::string & l, std::size_t p)
+{
+  std::size_t j = p;
+  while(j > 0 && l[j - 1] == ' ') --j;
+  if(j == 0) return Left::Other;
+  const char a = l[j - 1];
+  if(a == '=' || a == '(' || a == ',') return Left::Start;
+  if(a == '-') return j == p ? Left::Unary : Left::Binary;
+  if(a == '+') return Left::Binary;
+  if(a == '*' || a == '/') return Left::Mul;
+  return Left::Other;
+}
+
+Right rightOf(const std::string & l, std::size_t e)
+{
+  while(e < l.size() && l[e] == ' ') ++e;
+  if(e == l.size()) return Right::Other;
+  const char b = l[e];
+  if(b == ';' || b == ')' || b == ',') return Right::End;
+  if(b == '+' || b == '-') return Right::SumOp;
+  if(b == '*' || b == '/') return Right::MulOp;
+  return Right::Other;
+}
+
+/// Whether `rhs` substituted for the name at [p, e) of line l needs parentheses to be evaluated as
+/// one operand, as the name was.
+bool needsParentheses(const std::string & rhs, const std::string & l, std::size_t p, std::size_t e)
+{
+  const Left left = leftOf(l, p);
+  const Right right = rightOf(l, e);
+  if(left == Left::Other || right == Right::Other) return true;
+  const bool negated = rhs[0] == '-';
+  switch(kindOf(rhs))
+  {
+  case Kind::Atom:
+    return negated && left != Left::Start;
+  case Kind::Product:
+    if(negated) return left != Left::Start;
+    return left == Left::Mul;
+  case Kind::Sum:
+    return !(left == Left::Start && right != Right::MulOp);
+  }
+  return true;
+}
+
+std::size_t longestLine(const std::string & text)
+{
+  std::size_t best = 0, start = 0;
+  for(std::size_t i = 0; i <= text.size(); ++i)
+    if(i == text.size() || text[i] == '\n')
+    {
+      best = std::max(best, i - start);
+      start = i + 1;
+    }
+  return best;
+}
+
+} // namespace
+
+std::vector<std::string> inlineSingleUse(const std::vector<std::string> & input, std::size_t maxLength)
+{
+  std::vector<std::string> lines = input;
+  const std::size_t n = lines.size();
+
+  // Defined names, and for each the number of reads and the line of the last one.
+  std::map<std::string, std::size_t> defLine;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    std::string name, rhs;
+    if(parseDef(lines[k], name, rhs)) defLine.emplace(name, k);
+  }
+  std::map<std::string, int> reads;
+  std::map<std::string, std::size_t> readLine;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    std::string code = codeOf(lines[k]), name, rhs;
+    const std::size_t from = parseDef(lines[k], name, rhs) ? code.find(" = ") + 3 : 0;
+    code = code.substr(from);
+    forEachLocal(code, [&](std::size_t i, std::size_t j) {
+      const std::string id = code.substr(i, j - i);
+      if(!defLine.count(id)) return;
+      ++reads[id];
+      readLine[id] = k;
+    });
+  }
+  // What each line writes: nothing (a declaration or a comment), one object, or anything ("").
+  std::vector<bool> transparent(n);
+  std::vector<std::string> writes(n);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    transparent[k] = isTransparent(lines[k]);
+    if(!transparent[k]) writes[k] = writtenObject(codeOf(lines[k]));
+  }
+  // A read moves from line k to line `use` when no line in between writes what it reads.
+  auto canMove = [&](const std::string & rhs, std::size_t k, std::size_t use) {
+    if(use - k > 1000) return false;
+    std::vector<std::string> read;
+    forEachLocal(rhs, [&](std::size_t i, std::size_t j) { read.push_back(rhs.substr(i, j - i)); });
+    for(std::size_t m = k + 1; m < use; ++m)
+    {
+      if(transparent[m]) continue;
+      if(writes[m].empty() || std::find(read.begin(), read.end(), writes[m]) != read.end()) return false;
+    }
+    return true;
+  };
+
+  std::vector<bool> removed(n, false);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    std::string name, rhs;
+    if(!parseDef(lines[k], name, rhs) || defLine[name] != k || reads[name] != 1) continue;
+    if(rhs.empty() || rhs.find("::") != std::string::npos || rhs.find('?') != std::string::npos) continue;
+    const std::size_t use = readLine[name];
+    if(use <= k || !canMove(rhs, k, use)) continue;
+    std::string & target = lines[use];
+    if(!isPlainStatement(target)) continue;
+    // the one read of `name` (after the `=` of a declaration)
+    std::string targetName, targetRhs;
+    const std::string code = codeOf(target);
+    const std::size_t from = parseDef(target, targetName, targetRhs) ? code.find(" = ") + 3 : 0;
+    std::size_t at = std::string::npos;
+    forEachLocal(code, [&](std::size_t i, std::size_t j) {
+      if(i >= from && code.compare(i, j - i, name) == 0 && j - i == name.size()) at = i;
+    });
+    if(at == std::string::npos) continue;
+    std::string candidate = target, value = rhs;
+    std::size_t begin = at, end = at + name.size();
+    const Left left = leftOf(candidate, begin);
+    if(rhs[0] == '-' && kindOf(rhs) != Kind::Sum && (left == Left::Binary || left == Left::Unary) &&
+       rightOf(candidate, end) != Right::Other)
+    {
+      // a + -x is a - x, a - -x is a + x, -(-x) is x: negation is exact, the sign moves to the operator
+      std::size_t op = begin;
+      while(candidate[op - 1] == ' ') --op;
+      --op;
+      value = rhs.substr(1);
+      if(left == Left::Unary)
+      {
+        candidate.erase(op, 1);
+        --begin;
+        --end;
+      }
+      else candidate[op] = candidate[op] == '-' ? '+' : '-';
+    }
+    if(needsParentheses(value, candidate, begin, end)) value = "(" + value + ")";
+    std::string replaced = candidate.substr(0, begin) + value + candidate.substr(end);
+    if(longestLine(replaced) > maxLength) continue;
+    target = std::move(replaced);
+    removed[k] = true;
+  }
+  std::vector<std::string> out;
+  for(std::size_t k = 0; k < n; ++k)
+    if(!removed[k]) out.push_back(std::move(lines[k]));
+  return out;
+}
+
+} // namespace rbdgen::cg

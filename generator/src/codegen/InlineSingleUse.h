@@ -1,7 +1,7 @@
 #pragma once
 // Single-use temporaries folded into the one expression that reads them. A statement
-// `const S t = <rhs>;` whose t is read exactly once, by a later line with only declarations or
-// comments in between (nothing written in between, so <rhs> reads the same values there), is
+// `const S t = <rhs>;` whose t is read exactly once, by a line at most 32 lines below with nothing
+// written in between that <rhs> reads (so <rhs> reads the same values there), is
 // removed and <rhs> substituted for t, parenthesised unless C++ precedence already evaluates it as
 // one operand in the same order: `a + t` with t = `b * c` is `a + b * c`, `t * d` is `b * c * d`
 // ((b * c) * d), `t + d` with t = `a - b` is `a - b + d`; `d * t`, `d - t` and `d + t` with t a sum

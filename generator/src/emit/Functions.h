@@ -109,7 +109,7 @@ void writePointColumns(cg::Block & b, const MovingJoint & mj, const passes::Join
 /// Reads `kin` (Kinematics<S>) and `body` (Body); fills `J` (6 x nv, world axes at the link origin).
 EmittedBody jacobianBody(const RobotModel & rm);
 /// Reads `body`, q; fills the columns of `body`'s support path in `J` (world axes, at the world
-/// origin) and the link's world pose in `link_E`, `link_o` (the body of detail::support_jacobian).
+/// origin) and returns the link's world pose (the body of detail::support_jacobian).
 EmittedBody supportJacobianBody(const RobotModel & rm);
 /// Reads `body`, q (and `point`, link coordinates, when withPoint); fills `J` (6 x nv, world axes at
 /// the link origin or the point) computing only the link's support path.
@@ -123,8 +123,6 @@ EmittedBody centerOfMassFromConfigBody(const RobotModel & rm);
 EmittedBody bodyVelocitiesBody(const RobotModel & rm);
 /// Reads q, alpha, alphaD; fills `res[b]` (link accelerations without gravity, link coordinates).
 EmittedBody bodyAccelerationsBody(const RobotModel & rm);
-/// Reads `body`, `kin`, alpha; fills `res` (Jdot alpha at the link origin, world axes).
-EmittedBody jacobianDotTimesAlphaBody(const RobotModel & rm);
 /// Reads `kin`; fills `J` (3 x nv CoM Jacobian).
 EmittedBody comJacobianBody(const RobotModel & rm);
 /// Reads q; fills `A` (6 x nv centroidal momentum matrix, [angular about the CoM; linear]).

@@ -1,6 +1,7 @@
-// Link Jacobians and Jdot alpha along the support path of a link given at run time, from
-// precomputed kinematics (leaf to root by direct jumps) or from q (root to leaf over the path
-// table, nothing computed off the path), and the Jacobian of the centre of mass.
+// Link Jacobians along the support path of a link given at run time, from precomputed kinematics
+// (leaf to root by direct jumps) or from q (root to leaf over the path table, nothing computed off
+// the path; Jdot alpha is computed from these columns by the header's detail::jdot_from_columns),
+// and the Jacobian of the centre of mass.
 #include <fmt/format.h>
 
 #include "../passes/CompositeInertia.h"
@@ -61,7 +62,10 @@ EmittedBody supportJacobianBody(const RobotModel & rm)
   emitPathLoop(b, rm, "q", [&](int k, const JointKernel & K, const Xform & X0) {
     writeOriginColumns(b, rm.joints[static_cast<std::size_t>(k)], K, X0);
   });
-  emitLinkPoseFromWalk(b, rm, true, false);
+  emitLinkPoseFromWalk(b, rm, true);
+  // (returned, not assigned to the caller's variables: declared before the walk, g++ 12 kept them
+  // in memory and jacobian(q) of ur5 took 112 instead of 69 ns)
+  b.line("return {link_E, link_o};");
   return finish(b);
 }
 
@@ -98,54 +102,6 @@ EmittedBody jacobianFromConfigBody(const RobotModel & rm, bool withPoint)
   b.line("    J(5, c) += wx * p(1) - wy * p(0);");
   b.line("  }");
   b.line("}");
-  return finish(b);
-}
-
-namespace
-{
-
-// [A_w; A_v + A_w x p + V_w x (V_v + V_w x p)]: angular acceleration and the classical
-// acceleration of point p, from the spatial velocity V and acceleration A at the world origin.
-void writePointAcceleration(Block & b, const Vec3 & p, const Motion & V, const Motion & A)
-{
-  b.comment("angular: A_w; classical acceleration of the point p: A_v + A_w x p + V_w x (V_v + V_w x p)");
-  const Vec3 vp = add(b, V.v, cross(b, V.w, p, "Vwxp"), "vp");
-  const Vec3 lin = add(b, add(b, A.v, cross(b, A.w, p, "Awxp"), "ap"), cross(b, V.w, vp, "Vwxvp"), "acc");
-  writeMotion(b, "res", {A.w, lin});
-}
-
-// Accumulate a symbolic motion into a mutable Eigen 6-vector: `<dst>(i) += m_i;`.
-void accumulate(Block & b, const std::string & dst, const Motion & m)
-{
-  for(int c = 0; c < 3; ++c)
-  {
-    if(!m.w[c].isZero()) b.line(fmt::format("{}({}) += {};", dst, c, Block::text(m.w[c])));
-    if(!m.v[c].isZero()) b.line(fmt::format("{}({}) += {};", dst, c + 3, Block::text(m.v[c])));
-  }
-}
-
-} // namespace
-
-EmittedBody jacobianDotTimesAlphaBody(const RobotModel & rm)
-{
-  // World frame (Pluecker coordinates at the world origin). Joint k's velocity contribution is
-  // C_k = X_0_k^-1 (S_k alpha_k); the link's velocity is V = sum of C_k over its path and, at
-  // alphaD = 0, its acceleration is A = sum_k V_k x C_k with V_k the sum up to k (the body-frame
-  // recursion a_k = X a_p + v_k x vJ_k, summed in world coordinates). Writing V_k = V - U_k, U_k the
-  // sum of the contributions leafward of k, and V x V = 0: A = sum_k C_k x U_k, accumulated while
-  // walking from the link to the root (U += C_k after the term).
-  Block b;
-  b.line("const Eigen::Matrix<S, 3, 1> p = kin.pose[detail::at(body)].translation;");
-  b.line("Eigen::Matrix<S, 6, 1> U = Eigen::Matrix<S, 6, 1>::Zero(), A = Eigen::Matrix<S, 6, 1>::Zero();");
-  const Motion U{vec3Var("U", 0), vec3Var("U", 3)}, A{vec3Var("A", 0), vec3Var("A", 3)};
-  emitJumpWalk(b, rm, "jd", "A += C x U, U += C", [&](int k, const MovingJoint & mj) {
-    const JointKernel K = emitJointKernel(b, mj, "kin.q");
-    const Motion vJ = jointMotion(b, K, "alpha", mj.vIndex, mj.tag + "_vJ");
-    const Motion C = invApply(b, kinFrame(k), vJ, mj.tag + "_C");
-    accumulate(b, "A", cross(b, C, U, mj.tag + "_CxU"));
-    accumulate(b, "U", C);
-  });
-  writePointAcceleration(b, vec3Var("p"), U, A);
   return finish(b);
 }
 

@@ -35,19 +35,36 @@ Xform poseVars(const std::string & E, const std::string & o)
 
 // E = X.E, o = X.r for mutable E, o that X may read: entries that are other entries of E or o are
 // copied first (the assignments run in order), entries already in place are skipped.
-void assignPose(Block & b, const std::string & E, const std::string & o, const Xform & X)
+// E, o = X entry by entry; an entry already equal to its value is skipped (E and o hold the pose
+// named fromE, fromO: E itself, or the pose they were initialised from).
+void assignPose(Block & b, const std::string & E, const std::string & o, const Xform & X, std::string fromE = "",
+                std::string fromO = "")
 {
+  if(fromE.empty()) fromE = E;
+  if(fromO.empty()) fromO = o;
   std::vector<std::pair<std::string, Scalar>> moves;
+  std::vector<std::string> current;
   for(int r = 0; r < 3; ++r)
-    for(int c = 0; c < 3; ++c) moves.emplace_back(fmt::format("{}({}, {})", E, r, c), X.E(r, c));
-  for(int i = 0; i < 3; ++i) moves.emplace_back(fmt::format("{}({})", o, i), X.r[i]);
+    for(int c = 0; c < 3; ++c)
+    {
+      moves.emplace_back(fmt::format("{}({}, {})", E, r, c), X.E(r, c));
+      current.push_back(fmt::format("{}({}, {})", fromE, r, c));
+    }
+  for(int i = 0; i < 3; ++i)
+  {
+    moves.emplace_back(fmt::format("{}({})", o, i), X.r[i]);
+    current.push_back(fmt::format("{}({})", fromO, i));
+  }
   auto readsTarget = [&](const Scalar & x) {
     return !x.isConst() && (x.name().rfind(E + "(", 0) == 0 || x.name().rfind(o + "(", 0) == 0);
   };
   for(auto & [dst, x] : moves)
     if(readsTarget(x) && x.name() != dst) x = b.def(x.name(), "walk_copy");
-  for(const auto & [dst, x] : moves)
-    if(x.isConst() || x.name() != dst) b.line(fmt::format("{} = {};", dst, Block::text(x)));
+  for(std::size_t m = 0; m < moves.size(); ++m)
+  {
+    const auto & [dst, x] = moves[m];
+    if(x.isConst() || (x.name() != dst && x.name() != current[m])) b.line(fmt::format("{} = {};", dst, Block::text(x)));
+  }
 }
 
 } // namespace
@@ -163,11 +180,11 @@ Xform emitPathLoop(Block & b, const RobotModel & rm, const std::string & q,
   return walk;
 }
 
-void emitLinkPoseFromWalk(Block & b, const RobotModel & rm, bool rotation, bool declare)
+void emitLinkPoseFromWalk(Block & b, const RobotModel & rm, bool rotation)
 {
   b.comment("the link's world pose from its owner's: E_link = E_c walk_E, o_link = walk_o + walk_E^T r_c");
-  if(rotation) b.line(declare ? "Eigen::Matrix<S, 3, 3> link_E = walk_E;" : "link_E = walk_E;");
-  b.line(declare ? "Eigen::Matrix<S, 3, 1> link_o = walk_o;" : "link_o = walk_o;");
+  if(rotation) b.line("Eigen::Matrix<S, 3, 3> link_E = walk_E;");
+  b.line("Eigen::Matrix<S, 3, 1> link_o = walk_o;");
   b.line("switch(body)");
   b.line("{");
   const Xform walk = poseVars("walk_E", "walk_o");
@@ -177,7 +194,7 @@ void emitLinkPoseFromWalk(Block & b, const RobotModel & rm, bool rotation, bool 
     if(C.translation().isZero(0.0) && (!rotation || C.rotation().isIdentity(0.0))) continue;
     b.line(fmt::format("case Body::{}: {{", bf.ident));
     const Xform X = compose(b, constantXform(C), walk, "L_" + bf.ident);
-    if(rotation) assignPose(b, "link_E", "link_o", X);
+    if(rotation) assignPose(b, "link_E", "link_o", X, "walk_E", "walk_o");
     else
       for(int i = 0; i < 3; ++i) b.line(fmt::format("link_o({}) = {};", i, Block::text(X.r[i])));
     b.line("} break;");

@@ -36,8 +36,7 @@ Xform emitPathLoop(Block & b, const RobotModel & rm, const std::string & q,
                    const std::function<void(int k, const JointKernel & K, const Xform & X0)> & jointBlock);
 
 /// The world origin of link `body` (`link_o`) and, with rotation, its rotation (`link_E`), from the
-/// pose of its owner at the end of a path loop: a switch over the links, constants folded; declared
-/// as locals, or (declare false) assigned to the caller's.
-void emitLinkPoseFromWalk(Block & b, const RobotModel & rm, bool rotation, bool declare = true);
+/// pose of its owner at the end of a path loop: a switch over the links, constants folded.
+void emitLinkPoseFromWalk(Block & b, const RobotModel & rm, bool rotation);
 
 } // namespace rbdgen::passes

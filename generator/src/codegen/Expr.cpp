@@ -30,9 +30,17 @@ Scalar Scalar::var(std::string name)
   return s;
 }
 
-std::string Block::literal(double v)
+Scalar Scalar::named(double v, std::string label)
 {
-  if(v == std::floor(v) && std::abs(v) < 1e15) return "S(" + std::to_string(static_cast<long long>(v)) + ")";
+  Scalar s = constant(v);
+  if(v != 0.0 && std::abs(v) != 1.0) s.label_ = std::move(label);
+  return s;
+}
+
+std::string Block::number(double v)
+{
+  if(v == 0.0) return "0";
+  if(v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", v);
   // Shortest text that round-trips, for readability.
@@ -46,36 +54,83 @@ std::string Block::literal(double v)
       break;
     }
   }
-  return std::string("S(") + buf + ")";
+  return buf;
+}
+
+std::string Block::literal(double v)
+{
+  return "S(" + number(v) + ")";
 }
 
 std::string Block::text(const Scalar & s)
 {
-  return s.isConst() ? literal(s.value()) : s.name();
+  if(!s.isConst()) return s.name();
+  return s.label().empty() ? literal(s.value()) : "S(" + s.label() + ")";
 }
 
 namespace
 {
 
-// Fold constant factors into the coefficient and drop zero terms; merge a lone constant.
-std::vector<Term> normalise(const std::vector<Term> & terms, double & constant)
+// Fold constant factors into the coefficient and drop zero terms; merge the lone constants into
+// `constant`. A named constant stays a factor of its term (printed by name) when it is the term's
+// only constant factor besides a coefficient of +-1 and the term reads a variable; `constantLabel`
+// is the label of `constant` when one named constant (times +-1) is all of it.
+std::vector<Term> normalise(const std::vector<Term> & terms, double & constant, std::string * constantLabel = nullptr)
 {
   std::vector<Term> out;
   constant = 0.0;
+  int constants = 0;
+  std::string label;
   for(const Term & t : terms)
   {
     Term n;
     n.coef = t.coef;
+    const Scalar * named = nullptr;
+    int otherConstants = 0; // constant factors other than the named one and +-1
+    double sign = t.coef;
     for(const Scalar & f : t.factors)
     {
-      if(f.isConst()) n.coef *= f.value();
+      if(f.isConst())
+      {
+        n.coef *= f.value();
+        if(!f.label().empty() && !named) named = &f;
+        else if(std::abs(f.value()) == 1.0) sign *= f.value();
+        else ++otherConstants;
+      }
       else n.factors.push_back(f);
     }
     if(n.coef == 0.0) continue;
-    if(n.factors.empty()) constant += n.coef;
-    else out.push_back(n);
+    const bool byName = named && otherConstants == 0 && std::abs(sign) == 1.0;
+    Scalar positive; // the named factor with a label that does not start with '-' (the sign moved)
+    if(byName)
+    {
+      const bool negated = named->label()[0] == '-';
+      positive = negated ? Scalar::named(-named->value(), named->label().substr(1)) : *named;
+      if(negated) sign = -sign;
+    }
+    if(n.factors.empty())
+    {
+      constant += n.coef;
+      ++constants;
+      label = byName ? (sign < 0 ? "-" : "") + positive.label() : "";
+    }
+    else
+    {
+      if(byName)
+      {
+        n.coef = sign;
+        n.factors.insert(n.factors.begin(), positive);
+      }
+      out.push_back(n);
+    }
   }
+  if(constantLabel) *constantLabel = constants == 1 ? label : "";
   return out;
+}
+
+std::string factorText(const Scalar & f)
+{
+  return f.isConst() ? Block::text(f) : f.name();
 }
 
 template<typename F>
@@ -98,15 +153,29 @@ void forEachIdentifier(const std::string & text, F && f)
 
 } // namespace
 
+namespace
+{
+
+// c as the last operand of a sum: ` + S(0.5)`, ` - S(0.5)`, ` + S(model::j1.r[0])`, ` - S(model::j1.r[0])`
+std::string constantOperand(double c, const std::string & label)
+{
+  if(label.empty()) return (c < 0 ? " - " : " + ") + Block::literal(std::abs(c));
+  const bool negated = label[0] == '-';
+  return (negated ? " - " : " + ") + std::string("S(") + (negated ? label.substr(1) : label) + ")";
+}
+
+} // namespace
+
 std::string Block::text(const std::vector<Term> & terms)
 {
   double c = 0.0;
-  const std::vector<Term> ts = normalise(terms, c);
+  std::string cLabel;
+  const std::vector<Term> ts = normalise(terms, c, &cLabel);
   std::string s;
   for(const Term & t : ts)
   {
     std::string factors;
-    for(const Scalar & f : t.factors) factors += (factors.empty() ? "" : " * ") + f.name();
+    for(const Scalar & f : t.factors) factors += (factors.empty() ? "" : " * ") + factorText(f);
     const double a = std::abs(t.coef);
     const std::string mag = a == 1.0 ? factors : literal(a) + " * " + factors;
     if(s.empty()) s = (t.coef < 0 ? "-" : "") + mag;
@@ -114,8 +183,8 @@ std::string Block::text(const std::vector<Term> & terms)
   }
   if(c != 0.0 || s.empty())
   {
-    if(s.empty()) s = literal(c);
-    else s += (c < 0 ? " - " : " + ") + literal(std::abs(c));
+    if(s.empty()) s = cLabel.empty() ? literal(c) : "S(" + cLabel + ")";
+    else s += constantOperand(c, cLabel);
   }
   return s;
 }
@@ -133,8 +202,9 @@ std::string Block::fresh(const std::string & hint)
 Scalar Block::sum(const std::vector<Term> & terms, const std::string & hint)
 {
   double c = 0.0;
-  const std::vector<Term> ts = normalise(terms, c);
-  if(ts.empty()) return Scalar::constant(c);
+  std::string cLabel;
+  const std::vector<Term> ts = normalise(terms, c, &cLabel);
+  if(ts.empty()) return cLabel.empty() ? Scalar::constant(c) : Scalar::named(c, cLabel);
   if(ts.size() == 1 && c == 0.0 && ts[0].coef == 1.0 && ts[0].factors.size() == 1) return ts[0].factors[0];
   for(const Term & t : ts)
   {
@@ -142,8 +212,7 @@ Scalar Block::sum(const std::vector<Term> & terms, const std::string & hint)
   }
   adds_ += static_cast<long>(ts.size()) - 1 + (c != 0.0 ? 1 : 0);
   const std::string name = fresh(hint);
-  lines_.push_back("const S " + name + " = " + text(ts) + (c != 0.0 ? (c < 0 ? " - " : " + ") + literal(std::abs(c)) : "") +
-                   ";");
+  lines_.push_back("const S " + name + " = " + text(ts) + (c != 0.0 ? constantOperand(c, cLabel) : "") + ";");
   return Scalar::var(name);
 }
 

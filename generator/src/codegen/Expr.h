@@ -3,6 +3,10 @@
 // the name of a local in the emitted code. Every operation folds constants (0, ±1, literals), so a
 // joint about z, an identity fixed transform or a zero centre of mass cost nothing at run time:
 // axis specialisation and constant folding fall out of the arithmetic.
+//
+// A constant may carry a name (Scalar::named: a model parameter, e.g. `model::j2.r[1]`): it is
+// printed `S(name)` where it is read as it is (a factor of a product whose other constant factors
+// are +-1, or alone); once combined with other constants it folds to a literal like any other.
 
 #include <string>
 #include <vector>
@@ -16,16 +20,23 @@ public:
   Scalar() = default;
   static Scalar constant(double v);
   static Scalar var(std::string name);
+  /// A constant printed as `S(label)` (label: a C++ expression of value v, e.g. `model::j2.r[1]` or
+  /// `-model::j2.r[1]`); 0 and +-1 stay plain constants (they fold away).
+  static Scalar named(double v, std::string label);
 
   bool isConst() const { return isConst_; }
   double value() const { return value_; }
+  /// The variable's name (empty for a constant).
   const std::string & name() const { return name_; }
+  /// A named constant's label (empty otherwise).
+  const std::string & label() const { return label_; }
   bool isZero() const { return isConst_ && value_ == 0.0; }
 
 private:
   bool isConst_ = true;
   double value_ = 0.0;
   std::string name_;
+  std::string label_;
 };
 
 /// c * f1 * f2 * ... (constant factors are folded into c).
@@ -48,11 +59,13 @@ public:
   void line(const std::string & text);
   void comment(const std::string & text) { line("// " + text); }
 
-  /// C++ text of a scalar: a name or a literal `S(0.25)`.
+  /// C++ text of a scalar: a name, `S(label)` for a named constant, or a literal `S(0.25)`.
   static std::string text(const Scalar & s);
   /// C++ text of a sum of terms (no statement), "S(0)" when empty.
   static std::string text(const std::vector<Term> & terms);
   static std::string literal(double v);
+  /// The shortest decimal text that reads back as v (no `S(...)`): `0.25`, `-3`, `1e-12`.
+  static std::string number(double v);
 
   const std::vector<std::string> & lines() const { return lines_; }
   /// Statements joined with the given indentation; unused locals are removed first, then single-use

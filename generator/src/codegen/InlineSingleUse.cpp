@@ -31,7 +31,8 @@ bool parseDef(const std::string & l, std::string & name, std::string & rhs)
   return !name.empty() && std::all_of(name.begin(), name.end(), isPart);
 }
 
-/// Positions of `name` read as a local in `text` (not a member after `.`, not part of a longer name).
+/// Positions of `name` read as a local in `text` (not a member after `.`, not qualified after `::`,
+/// not part of a longer name).
 template<typename F>
 void forEachLocal(const std::string & text, F && f)
 {
@@ -41,12 +42,26 @@ void forEachLocal(const std::string & text, F && f)
     {
       std::size_t j = i;
       while(j < text.size() && isPart(text[j])) ++j;
-      const bool member = i > 0 && text[i - 1] == '.';
+      const bool member = i > 0 && (text[i - 1] == '.' || (i > 1 && text[i - 1] == ':' && text[i - 2] == ':'));
       if(!member) f(i, j);
       i = j;
     }
     else ++i;
   }
+}
+
+/// Whether e calls a qualified function (`std::sin(`, `detail::Lanes<S>::sqrt(`): a qualified name
+/// followed by `(` or `<`; a named model constant (`S(model::j3.r[2])`) is not a call.
+bool callsQualified(const std::string & e)
+{
+  for(std::size_t p = e.find("::"); p != std::string::npos; p = e.find("::", p + 2))
+  {
+    std::size_t j = p + 2;
+    while(j < e.size() && isPart(e[j])) ++j;
+    if(j < e.size() && (e[j] == '(' || e[j] == '<')) return true;
+    if(p > 0 && e[p - 1] == '>') return true; // Lanes<S>::...
+  }
+  return false;
 }
 
 /// Lines a read can move across: declarations (they write nothing already declared) and comments.
@@ -229,7 +244,7 @@ std::vector<std::string> inlineSingleUse(const std::vector<std::string> & input,
   {
     std::string name, rhs;
     if(!parseDef(lines[k], name, rhs) || defLine[name] != k || reads[name] != 1) continue;
-    if(rhs.empty() || rhs.find("::") != std::string::npos || rhs.find('?') != std::string::npos) continue;
+    if(rhs.empty() || callsQualified(rhs) || rhs.find('?') != std::string::npos) continue;
     const std::size_t use = readLine[name];
     if(use <= k || !canMove(rhs, k, use)) continue;
     std::string & target = lines[use];

@@ -98,7 +98,7 @@ EmittedBody abaBody(const RobotModel & rm)
       pa.f[i] = b.sum(tf, fmt::format("{}_pa_f{}", t, i));
     }
     const auto p = static_cast<std::size_t>(mj.parent);
-    const ABI IaP = transApplyABI(b, constantXform(mj.Xt), transApplyABI(b, K[k].Xj, Ia, t + "_IaJ"), t + "_IaP");
+    const ABI IaP = transApplyABI(b, treeXform(mj), transApplyABI(b, K[k].Xj, Ia, t + "_IaJ"), t + "_IaP");
     IA[p] = addABI(b, IA[p], IaP, rm.joints[p].tag + "_IA");
     pA[p] = add(b, pA[p], toParent(b, mj, K[k], pa, t + "_paP"), rm.joints[p].tag + "_pA");
   }

@@ -46,7 +46,7 @@ EmittedBody linkMotions(const RobotModel & rm, bool acceleration)
       continue;
     }
     const auto o = static_cast<std::size_t>(bf.owner);
-    writeMotion(b, dst, apply(b, constantXform(bf.X_owner_link), acceleration ? m.a[o] : m.v[o], "L_" + bf.ident));
+    writeMotion(b, dst, apply(b, linkXform(bf), acceleration ? m.a[o] : m.v[o], "L_" + bf.ident));
   }
   return finish(b);
 }

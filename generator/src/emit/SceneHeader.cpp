@@ -440,6 +440,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
   flags["own_model"] = false;
   flags["coupled"] = true;
   flags["independent_alias"] = false;
+  v.erase("model_constants"); // those of NS::independent: the coupled API calls its functions
   flags["forward_dynamics"] = fdc;
   flags["no_forward_dynamics"] = !fdc;
   flags["quaternion"] = Jc.free || Jc.spherical;

@@ -7,9 +7,25 @@
 namespace rbdgen::passes
 {
 
+Eigen::Matrix3d symmetricInertia(const MovingJoint & mj)
+{
+  const Eigen::Matrix3d I = mj.inertia.inertia();
+  return 0.5 * (I + I.transpose());
+}
+
 Inertia bodyInertia(const MovingJoint & mj)
 {
-  return constantInertia(mj.inertia.mass(), mj.inertia.momentum(), mj.inertia.inertia());
+  const std::string c = "model::" + mj.tag;
+  const Eigen::Vector3d h = mj.inertia.momentum();
+  const Eigen::Matrix3d I = symmetricInertia(mj);
+  Inertia o;
+  o.m = Scalar::named(mj.inertia.mass(), c + ".m");
+  for(int r = 0; r < 3; ++r)
+  {
+    o.h[r] = Scalar::named(h[r], fmt::format("{}.h[{}]", c, r));
+    for(int k = 0; k < 3; ++k) o.I(r, k) = Scalar::named(I(r, k), fmt::format("{}.I[{}][{}]", c, r, k));
+  }
+  return o;
 }
 
 std::vector<Force> inertialForces(PassContext & ctx, const MotionState & m, bool velocityProducts,

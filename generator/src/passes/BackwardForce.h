@@ -14,8 +14,11 @@
 namespace rbdgen::passes
 {
 
-/// Constant rigid-body inertia of the body moved by joint k (merged links included).
+/// Constant rigid-body inertia of the body moved by joint k (merged links included), entries named
+/// after the header's model constants (`model::<tag>.m`, `.h[i]`, `.I[r][c]`; see modelConstants).
 Inertia bodyInertia(const MovingJoint & mj);
+/// The rotational inertia bodyInertia uses: (I + I^T) / 2 of the body's inertia at its origin.
+Eigen::Matrix3d symmetricInertia(const MovingJoint & mj);
 
 /// f_k = I_k a_k (+ v_k x* I_k v_k when velocityProducts) for every joint in `joints`, zero elsewhere.
 std::vector<Force> inertialForces(PassContext & ctx, const MotionState & m, bool velocityProducts,

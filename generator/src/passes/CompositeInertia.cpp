@@ -26,7 +26,7 @@ std::vector<Inertia> compositeInertias(PassContext & ctx)
     if(mj.parent < 0) continue;
     b.comment(fmt::format("{}: composite inertia into its parent, Ic_p += X_p_i^T Ic_i X_p_i", mj.tag));
     const Inertia Ij = transApply(b, ctx.kernel(static_cast<int>(k)).Xj, Ic[k], mj.tag + "_Icj");
-    const Inertia Ip = transApply(b, constantXform(mj.Xt), Ij, mj.tag + "_Icp");
+    const Inertia Ip = transApply(b, treeXform(mj), Ij, mj.tag + "_Icp");
     const auto p = static_cast<std::size_t>(mj.parent);
     Ic[p] = add(b, Ic[p], Ip, rm.joints[p].tag + "_Ic");
   }
@@ -37,8 +37,8 @@ Vec3 firstMoment(PassContext & ctx, int k, const Xform & X0)
 {
   Block & b = ctx.block();
   const MovingJoint & mj = ctx.joint(k);
-  return add(b, tmul(b, X0.E, Vec3::constant(mj.inertia.momentum()), mj.tag + "_h"),
-             scale(b, Scalar::constant(mj.inertia.mass()), X0.r, mj.tag + "_mo"), mj.tag + "_mc");
+  const Inertia I = bodyInertia(mj);
+  return add(b, tmul(b, X0.E, I.h, mj.tag + "_h"), scale(b, I.m, X0.r, mj.tag + "_mo"), mj.tag + "_mc");
 }
 
 Vec3 totalFirstMoment(PassContext & ctx, const std::vector<Xform> & X0)

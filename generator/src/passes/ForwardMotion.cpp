@@ -46,7 +46,7 @@ MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const st
     const auto p = static_cast<std::size_t>(root ? 0 : mj.parent);
     if(req.poses && !shared)
     {
-      const Xform Xt = constantXform(mj.Xt);
+      const Xform Xt = treeXform(mj);
       m.X0[kk] = compose(b, K.Xj, root ? Xt : compose(b, Xt, m.X0[p], t + "_X0t"), t + "_X0");
     }
     if(req.velocity && !shared)
@@ -75,7 +75,7 @@ Motion velocityProduct(PassContext & ctx, const MotionState & m, int k, const st
 Xform linkPose(PassContext & ctx, const MotionState & m, int body)
 {
   const BodyFrame & bf = ctx.model().bodies[static_cast<std::size_t>(body)];
-  const Xform C = constantXform(bf.X_owner_link);
+  const Xform C = linkXform(bf);
   return bf.owner < 0 ? C : compose(ctx.block(), C, m.X0[static_cast<std::size_t>(bf.owner)], "X0_" + bf.ident);
 }
 

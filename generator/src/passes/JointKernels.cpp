@@ -1,4 +1,5 @@
 #include "JointKernels.h"
+#include "BackwardForce.h"
 
 #include <cmath>
 
@@ -10,6 +11,78 @@ namespace rbdgen::passes
 Xform constantXform(const sva::PTransformd & X)
 {
   return {Mat3::constant(X.rotation()), Vec3::constant(X.translation())};
+}
+
+namespace
+{
+
+Xform namedXform(const sva::PTransformd & X, const std::string & c)
+{
+  Xform o;
+  for(int r = 0; r < 3; ++r)
+  {
+    for(int k = 0; k < 3; ++k) o.E(r, k) = Scalar::named(X.rotation()(r, k), fmt::format("{}.E[{}][{}]", c, r, k));
+    o.r[r] = Scalar::named(X.translation()[r], fmt::format("{}.r[{}]", c, r));
+  }
+  return o;
+}
+
+std::string numbers(const std::vector<double> & values)
+{
+  std::string out;
+  for(double v : values) out += (out.empty() ? "" : ", ") + Block::number(v);
+  return "{" + out + "}";
+}
+
+std::string numbers(const Eigen::Vector3d & v) { return numbers(std::vector<double>{v.x(), v.y(), v.z()}); }
+
+std::string numbers(const Eigen::Matrix3d & M)
+{
+  return fmt::format("{{{}, {}, {}}}", numbers(Eigen::Vector3d(M.row(0))), numbers(Eigen::Vector3d(M.row(1))),
+                     numbers(Eigen::Vector3d(M.row(2))));
+}
+
+bool offOwner(const BodyFrame & bf)
+{
+  return !(bf.X_owner_link.translation().isZero(0.0) && bf.X_owner_link.rotation().isIdentity(0.0));
+}
+
+} // namespace
+
+Xform treeXform(const MovingJoint & mj)
+{
+  return namedXform(mj.Xt, "model::" + mj.tag);
+}
+
+Xform linkXform(const BodyFrame & bf)
+{
+  return offOwner(bf) ? namedXform(bf.X_owner_link, "model::L_" + bf.ident) : constantXform(bf.X_owner_link);
+}
+
+std::string modelConstants(const RobotModel & rm)
+{
+  std::string out;
+  for(std::size_t k = 0; k < rm.joints.size(); ++k)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    std::string moved;
+    for(const BodyFrame & bf : rm.bodies)
+      if(bf.owner == static_cast<int>(k))
+      {
+        moved = bf.name;
+        break;
+      }
+    out += fmt::format("constexpr JointConstants {} = {{{}, {}, {}, {}, {}}}; // joint '{}', moving link '{}'\n", mj.tag,
+                       numbers(Eigen::Matrix3d(mj.Xt.rotation())), numbers(Eigen::Vector3d(mj.Xt.translation())),
+                       Block::number(mj.inertia.mass()), numbers(Eigen::Vector3d(mj.inertia.momentum())),
+                       numbers(symmetricInertia(mj)), mj.name, moved);
+  }
+  for(const BodyFrame & bf : rm.bodies)
+    if(offOwner(bf))
+      out += fmt::format("constexpr LinkConstants L_{} = {{{}, {}}}; // link '{}' on {}\n", bf.ident,
+                         numbers(Eigen::Matrix3d(bf.X_owner_link.rotation())), numbers(Eigen::Vector3d(bf.X_owner_link.translation())),
+                         bf.name, bf.owner < 0 ? "the world" : "joint '" + rm.joints[static_cast<std::size_t>(bf.owner)].name + "'");
+  return out;
 }
 
 namespace
@@ -154,12 +227,12 @@ JointKernel emitJointKernel(Block & b, const MovingJoint & mj, const std::string
 
 Motion toChild(Block & b, const MovingJoint & mj, const JointKernel & K, const Motion & m, const std::string & hint)
 {
-  return apply(b, K.Xj, apply(b, constantXform(mj.Xt), m, hint + "_t"), hint);
+  return apply(b, K.Xj, apply(b, treeXform(mj), m, hint + "_t"), hint);
 }
 
 Force toParent(Block & b, const MovingJoint & mj, const JointKernel & K, const Force & f, const std::string & hint)
 {
-  return transApply(b, constantXform(mj.Xt), transApply(b, K.Xj, f, hint + "_j"), hint);
+  return transApply(b, treeXform(mj), transApply(b, K.Xj, f, hint + "_j"), hint);
 }
 
 Motion jointMotion(Block & b, const JointKernel & K, const std::string & v, int offset, const std::string & hint)

@@ -167,7 +167,7 @@ Xform emitPathLoop(Block & b, const RobotModel & rm, const std::string & q,
     const MovingJoint & mj = rm.joints[k];
     b.line(fmt::format("case {}: {{ // joint '{}' ({})", k, mj.name, describeJoint(mj)));
     const JointKernel K = emitJointKernel(b, mj, q, angles);
-    const Xform Xt = constantXform(mj.Xt);
+    const Xform Xt = treeXform(mj);
     // X_0_k = X_j X_T X_0_p, X_0_p = identity for a joint on the world
     const Xform X0 = compose(b, K.Xj, mj.parent < 0 ? Xt : compose(b, Xt, walk, mj.tag + "_X0t"), mj.tag + "_X0");
     jointBlock(static_cast<int>(k), K, X0);
@@ -193,7 +193,7 @@ void emitLinkPoseFromWalk(Block & b, const RobotModel & rm, bool rotation)
     const sva::PTransformd & C = bf.X_owner_link;
     if(C.translation().isZero(0.0) && (!rotation || C.rotation().isIdentity(0.0))) continue;
     b.line(fmt::format("case Body::{}: {{", bf.ident));
-    const Xform X = compose(b, constantXform(C), walk, "L_" + bf.ident);
+    const Xform X = compose(b, linkXform(bf), walk, "L_" + bf.ident);
     if(rotation) assignPose(b, "link_E", "link_o", X, "walk_E", "walk_o");
     else
       for(int i = 0; i < 3; ++i) b.line(fmt::format("link_o({}) = {};", i, Block::text(X.r[i])));

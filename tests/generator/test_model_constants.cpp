@@ -1,4 +1,5 @@
-// The generated header's named model constants (ur5e::model::j<k>) against the URDF text, read here
+// The generated header's named model constants (ur5e::model::j<k>.E01, .ry, .m, .hz, .I22...) against
+// the URDF text, read here
 // with tinyxml2 and converted by the formulas the header documents, independently of the loader:
 //   X_T = (E, r): r = the joint origin's xyz, E = R(rpy)^T with R = Rz(yaw) Ry(pitch) Rx(roll),
 //                 entries within 1e-14 of 0 or +-1 snapped (docs/DESIGN.md: URDF round-off);
@@ -44,6 +45,14 @@ double snapped(double x)
   return x;
 }
 
+// The members by index: E(a, b) = E<a><b>, r(a) = r<x|y|z>, h(a) = h<x|y|z>, I(a, b) = I<a><b>.
+using L = ur5e::LinkConstants;
+using J = ur5e::JointConstants;
+constexpr double L::*kE[3][3] = {{&L::E00, &L::E01, &L::E02}, {&L::E10, &L::E11, &L::E12}, {&L::E20, &L::E21, &L::E22}};
+constexpr double L::*kR[3] = {&L::rx, &L::ry, &L::rz};
+constexpr double J::*kH[3] = {&J::hx, &J::hy, &J::hz};
+constexpr double J::*kI[3][3] = {{&J::I00, &J::I01, &J::I02}, {&J::I10, &J::I11, &J::I12}, {&J::I20, &J::I21, &J::I22}};
+
 const tinyxml2::XMLElement * link(const tinyxml2::XMLDocument & doc, const std::string & name)
 {
   for(auto * l = doc.RootElement()->FirstChildElement("link"); l; l = l->NextSiblingElement("link"))
@@ -72,8 +81,8 @@ TEST(ModelConstants, AreTheUrdfValues)
     const Eigen::Matrix3d E = rotationRpy(triple(origin, "rpy")).transpose();
     for(int a = 0; a < 3; ++a)
     {
-      EXPECT_EQ(c.r[a], r[a]);
-      for(int b = 0; b < 3; ++b) EXPECT_NEAR(c.E[a][b], snapped(E(a, b)), 1e-16) << a << b;
+      EXPECT_EQ(c.*kR[a], r[a]);
+      for(int b = 0; b < 3; ++b) EXPECT_NEAR(c.*kE[a][b], snapped(E(a, b)), 1e-16) << a << b;
     }
     // the child link's inertia at its origin
     const auto * inertial = link(doc, j->FirstChildElement("child")->Attribute("link"))->FirstChildElement("inertial");
@@ -90,11 +99,11 @@ TEST(ModelConstants, AreTheUrdfValues)
     EXPECT_EQ(c.m, m);
     for(int a = 0; a < 3; ++a)
     {
-      EXPECT_NEAR(c.h[a], m * com[a], 1e-15 * m);
+      EXPECT_NEAR(c.*kH[a], m * com[a], 1e-15 * m);
       for(int b = 0; b < 3; ++b)
       {
-        EXPECT_NEAR(c.I[a][b], I(a, b), 1e-15 * I.norm()) << a << b;
-        EXPECT_EQ(c.I[a][b], c.I[b][a]);
+        EXPECT_NEAR(c.*kI[a][b], I(a, b), 1e-15 * I.norm()) << a << b;
+        EXPECT_EQ(c.*kI[a][b], c.*kI[b][a]);
       }
     }
   }
@@ -105,9 +114,9 @@ TEST(ModelConstants, AreTheUrdfValues)
 // generated-vs-runtime suite checks the values the functions compute).
 TEST(ModelConstants, AreConstantExpressions)
 {
-  constexpr double lift = ur5e::model::j2.r[0] + ur5e::model::j1.m;
+  constexpr double lift = ur5e::model::j2.rx + ur5e::model::j1.m;
   static_assert(lift != 0.0, "usable in constant expressions");
-  EXPECT_EQ(lift, ur5e::model::j2.r[0] + ur5e::model::j1.m);
+  EXPECT_EQ(lift, ur5e::model::j2.rx + ur5e::model::j1.m);
 }
 
 } // namespace

@@ -176,12 +176,12 @@ TEST(InlineSingleUse, DoesNotMoveReadsAcrossWritesOrIntoLoops)
   EXPECT_EQ(out.back(), "out[2] = x - y;");
 }
 
-// Named model constants (`S(model::j1.r[0])`) fold like literals; a call of a qualified function
+// Named model constants (`S(model::j1.rx)`) fold like literals; a call of a qualified function
 // (`std::sin(x)`, `detail::Lanes<S>::sqrt(x)`) stays where it is; a name after `::` or `.` is not a local.
 TEST(InlineSingleUse, FoldsNamedConstantsButNotQualifiedCalls)
 {
   const std::vector<std::string> lines = {
-      "const S a = S(model::j1.r[0]) * x;",
+      "const S a = S(model::j1.rx) * x;",
       "out[0] = a + y;",
       "const S b = std::sin(x);",
       "out[1] = b;",
@@ -192,7 +192,7 @@ TEST(InlineSingleUse, FoldsNamedConstantsButNotQualifiedCalls)
   };
   const std::vector<std::string> out = inlineSingleUse(lines);
   ASSERT_EQ(out.size(), 6u);
-  EXPECT_EQ(out[0], "out[0] = S(model::j1.r[0]) * x + y;");
+  EXPECT_EQ(out[0], "out[0] = S(model::j1.rx) * x + y;");
   EXPECT_EQ(out[1], "const S b = std::sin(x);");
   EXPECT_EQ(out[3], "const S c = detail::Lanes<S>::sqrt(x);");
   EXPECT_EQ(out[5], "out[3] = S(model::j1.m) * (x * y);");

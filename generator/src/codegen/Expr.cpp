@@ -156,7 +156,7 @@ void forEachIdentifier(const std::string & text, F && f)
 namespace
 {
 
-// c as the last operand of a sum: ` + S(0.5)`, ` - S(0.5)`, ` + S(model::j1.r[0])`, ` - S(model::j1.r[0])`
+// c as the last operand of a sum: ` + S(0.5)`, ` - S(0.5)`, ` + S(model::j1.rx)`, ` - S(model::j1.rx)`
 std::string constantOperand(double c, const std::string & label)
 {
   if(label.empty()) return (c < 0 ? " - " : " + ") + Block::literal(std::abs(c));

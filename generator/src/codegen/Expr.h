@@ -4,7 +4,7 @@
 // joint about z, an identity fixed transform or a zero centre of mass cost nothing at run time:
 // axis specialisation and constant folding fall out of the arithmetic.
 //
-// A constant may carry a name (Scalar::named: a model parameter, e.g. `model::j2.r[1]`): it is
+// A constant may carry a name (Scalar::named: a model parameter, e.g. `model::j2.ry`): it is
 // printed `S(name)` where it is read as it is (a factor of a product whose other constant factors
 // are +-1, or alone); once combined with other constants it folds to a literal like any other.
 
@@ -20,8 +20,8 @@ public:
   Scalar() = default;
   static Scalar constant(double v);
   static Scalar var(std::string name);
-  /// A constant printed as `S(label)` (label: a C++ expression of value v, e.g. `model::j2.r[1]` or
-  /// `-model::j2.r[1]`); 0 and +-1 stay plain constants (they fold away).
+  /// A constant printed as `S(label)` (label: a C++ expression of value v, e.g. `model::j2.ry` or
+  /// `-model::j2.ry`); 0 and +-1 stay plain constants (they fold away).
   static Scalar named(double v, std::string label);
 
   bool isConst() const { return isConst_; }

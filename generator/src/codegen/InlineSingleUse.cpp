@@ -51,7 +51,7 @@ void forEachLocal(const std::string & text, F && f)
 }
 
 /// Whether e calls a qualified function (`std::sin(`, `detail::Lanes<S>::sqrt(`): a qualified name
-/// followed by `(` or `<`; a named model constant (`S(model::j3.r[2])`) is not a call.
+/// followed by `(` or `<`; a named model constant (`S(model::j3.rz)`) is not a call.
 bool callsQualified(const std::string & e)
 {
   for(std::size_t p = e.find("::"); p != std::string::npos; p = e.find("::", p + 2))

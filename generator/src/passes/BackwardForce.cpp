@@ -22,8 +22,8 @@ Inertia bodyInertia(const MovingJoint & mj)
   o.m = Scalar::named(mj.inertia.mass(), c + ".m");
   for(int r = 0; r < 3; ++r)
   {
-    o.h[r] = Scalar::named(h[r], fmt::format("{}.h[{}]", c, r));
-    for(int k = 0; k < 3; ++k) o.I(r, k) = Scalar::named(I(r, k), fmt::format("{}.I[{}][{}]", c, r, k));
+    o.h[r] = Scalar::named(h[r], fmt::format("{}.h{}", c, "xyz"[r]));
+    for(int k = 0; k < 3; ++k) o.I(r, k) = Scalar::named(I(r, k), fmt::format("{}.I{}{}", c, r, k));
   }
   return o;
 }

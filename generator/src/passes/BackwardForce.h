@@ -15,7 +15,7 @@ namespace rbdgen::passes
 {
 
 /// Constant rigid-body inertia of the body moved by joint k (merged links included), entries named
-/// after the header's model constants (`model::<tag>.m`, `.h[i]`, `.I[r][c]`; see modelConstants).
+/// after the header's model constants (`model::<tag>.m`, `.hx`, `.I01`; see modelConstants).
 Inertia bodyInertia(const MovingJoint & mj);
 /// The rotational inertia bodyInertia uses: (I + I^T) / 2 of the body's inertia at its origin.
 Eigen::Matrix3d symmetricInertia(const MovingJoint & mj);

@@ -21,25 +21,25 @@ Xform namedXform(const sva::PTransformd & X, const std::string & c)
   Xform o;
   for(int r = 0; r < 3; ++r)
   {
-    for(int k = 0; k < 3; ++k) o.E(r, k) = Scalar::named(X.rotation()(r, k), fmt::format("{}.E[{}][{}]", c, r, k));
-    o.r[r] = Scalar::named(X.translation()[r], fmt::format("{}.r[{}]", c, r));
+    for(int k = 0; k < 3; ++k) o.E(r, k) = Scalar::named(X.rotation()(r, k), fmt::format("{}.E{}{}", c, r, k));
+    o.r[r] = Scalar::named(X.translation()[r], fmt::format("{}.r{}", c, "xyz"[r]));
   }
   return o;
 }
 
+// "a, b, c" of the values (no braces: the model structs are flat, one member per entry)
 std::string numbers(const std::vector<double> & values)
 {
   std::string out;
   for(double v : values) out += (out.empty() ? "" : ", ") + Block::number(v);
-  return "{" + out + "}";
+  return out;
 }
 
 std::string numbers(const Eigen::Vector3d & v) { return numbers(std::vector<double>{v.x(), v.y(), v.z()}); }
 
-std::string numbers(const Eigen::Matrix3d & M)
+std::string numbers(const Eigen::Matrix3d & M) // row by row
 {
-  return fmt::format("{{{}, {}, {}}}", numbers(Eigen::Vector3d(M.row(0))), numbers(Eigen::Vector3d(M.row(1))),
-                     numbers(Eigen::Vector3d(M.row(2))));
+  return numbers(std::vector<double>{M(0, 0), M(0, 1), M(0, 2), M(1, 0), M(1, 1), M(1, 2), M(2, 0), M(2, 1), M(2, 2)});
 }
 
 bool offOwner(const BodyFrame & bf)
@@ -72,14 +72,14 @@ std::string modelConstants(const RobotModel & rm)
         moved = bf.name;
         break;
       }
-    out += fmt::format("constexpr JointConstants {} = {{{}, {}, {}, {}, {}}}; // joint '{}', moving link '{}'\n", mj.tag,
+    out += fmt::format("constexpr JointConstants {} = {{{{/*E*/ {}, /*r*/ {}}}, /*m*/ {}, /*h*/ {}, /*I*/ {}}}; // joint '{}', moving link '{}'\n", mj.tag,
                        numbers(Eigen::Matrix3d(mj.Xt.rotation())), numbers(Eigen::Vector3d(mj.Xt.translation())),
                        Block::number(mj.inertia.mass()), numbers(Eigen::Vector3d(mj.inertia.momentum())),
                        numbers(symmetricInertia(mj)), mj.name, moved);
   }
   for(const BodyFrame & bf : rm.bodies)
     if(offOwner(bf))
-      out += fmt::format("constexpr LinkConstants L_{} = {{{}, {}}}; // link '{}' on {}\n", bf.ident,
+      out += fmt::format("constexpr LinkConstants L_{} = {{/*E*/ {}, /*r*/ {}}}; // link '{}' on {}\n", bf.ident,
                          numbers(Eigen::Matrix3d(bf.X_owner_link.rotation())), numbers(Eigen::Vector3d(bf.X_owner_link.translation())),
                          bf.name, bf.owner < 0 ? "the world" : "joint '" + rm.joints[static_cast<std::size_t>(bf.owner)].name + "'");
   return out;

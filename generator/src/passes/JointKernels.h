@@ -43,10 +43,10 @@ std::vector<Scalar> projectForce(Block & b, const JointKernel & K, const Force &
 /// Constant transform.
 Xform constantXform(const sva::PTransformd & X);
 /// Joint mj's constant transform X_T from its parent body frame, entries named after the header's
-/// model constants (`model::<tag>.E[r][c]`, `model::<tag>.r[i]`; see modelConstants).
+/// model constants (`model::<tag>.E01`, `model::<tag>.ry`; see modelConstants).
 Xform treeXform(const MovingJoint & mj);
 /// The constant transform from link bf's owner's body frame to the link frame (links on fixed joints),
-/// entries named `model::L_<ident>.E[r][c]`, `model::L_<ident>.r[i]`.
+/// entries named `model::L_<ident>.E01`, `.ry`.
 Xform linkXform(const BodyFrame & bf);
 /// The `model` namespace of a header: one constexpr JointConstants per moving joint (X_T and the
 /// inertia of the body it moves) and one LinkConstants per link off its owner's frame, the values

@@ -264,9 +264,4 @@ Inertia add(Block & b, const Inertia & x, const Inertia & y, const std::string &
   return {add(b, x.m, y.m, hint + "_m"), add(b, x.h, y.h, hint + "_h"), addSym(b, x.I, y.I, hint + "_I")};
 }
 
-Inertia constantInertia(double m, const Eigen::Vector3d & h, const Eigen::Matrix3d & I)
-{
-  return {Scalar::constant(m), Vec3::constant(h), Mat3::constant(0.5 * (I + I.transpose()))};
-}
-
 } // namespace rbdgen::cg

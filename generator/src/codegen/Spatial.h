@@ -100,7 +100,5 @@ Force apply(Block & b, const Inertia & I, const Motion & m, const std::string & 
 /// X^T I X (inertia in the predecessor frame of X)
 Inertia transApply(Block & b, const Xform & X, const Inertia & I, const std::string & hint);
 Inertia add(Block & b, const Inertia & x, const Inertia & y, const std::string & hint);
-/// Fold an Eigen-valued rbi into a constant Inertia.
-Inertia constantInertia(double m, const Eigen::Vector3d & h, const Eigen::Matrix3d & I);
 
 } // namespace rbdgen::cg

@@ -44,7 +44,11 @@ std::map<std::string, std::string> preludeValues(const RobotModel & rm, const st
   v["detail_inline"] = templateText("detail_inline.hpp.in"); // RBDGEN_INLINE (the shared passes)
   if(derivatives) v["detail_opaque"] = templateText("detail_opaque.hpp.in"); // detail::opaque (derivatives)
   v.merge(robotTemplateValues(rm)); // nq, nv, nbodies, nframes, Body enum, names
-  v["model_constants"] = passes::modelConstants(rm); // model::<tag>, named by the emitted code
+  // NS::model: the constants the emitted code reads by name (passes::treeXform, linkXform, bodyInertia)
+  std::string modelTable = fillTemplate(templateText("model_constants.hpp.in"), {{"entries", passes::modelConstants(rm)}},
+                                        "templates/model_constants.hpp.in");
+  modelTable.pop_back(); // (the template's last newline: the placeholder ends its line)
+  v["model_constants"] = modelTable;
   v["has_forward_dynamics"] = forwardDynamics ? "true" : "false";
   v["has_derivatives"] = derivatives ? "true" : "false";
   return v;

@@ -15,6 +15,7 @@
 //   test_generated's (kDouble below, grown with cond(H) for forward dynamics).
 // - float batch vs double single state: test_generated's float bounds.
 // - Layout::columns (structure of arrays) gives Layout::rows' values bitwise.
+// - Many calls in a row with threads 2-4 equal threads = 1 (the pool's chunks and withdrawals).
 // - No heap allocation with threads = 1, in either layout.
 #include <cmath>
 #include <cstdio>
@@ -425,6 +426,27 @@ TEST_P(Batch, ConcurrentCallsWithThreads)
   for(std::size_t c = 0; c < 4; ++c)
     for(std::size_t m = 0; m < f.outputs.size(); ++m)
       EXPECT_EQ(together[c].out[m], alone[c].out[m]) << r().name << " " << f.name << ", caller " << c << ", output " << m;
+}
+
+/// Many calls in a row with threads > 1 (chunks taken in turn; a pool thread still asleep when the
+/// caller has taken the last chunk is withdrawn and must take part in the next call only): every
+/// call equals threads = 1.
+TEST_P(Batch, ManyCallsInARowWithThreads)
+{
+  const BatchFunction<double> & f = r().d.front();
+  for(std::size_t N : {std::size_t{5}, std::size_t{100}})
+  {
+    const auto inputs = States(r(), f.inputs, N, 77).in;
+    Outputs<double> one(f.outputs, N, r().widthDouble), many(f.outputs, N, r().widthDouble);
+    f.batch(constPtrs(inputs).data(), one.ptrs().data(), N, 1, Layout::rows);
+    for(int k = 0; k < 300; ++k)
+    {
+      const int th = 2 + k % 3;
+      f.batch(constPtrs(inputs).data(), many.ptrs().data(), N, th, Layout::rows);
+      for(std::size_t m = 0; m < f.outputs.size(); ++m)
+        ASSERT_EQ(many.out[m], one.out[m]) << r().name << " " << f.name << ", N = " << N << ", call " << k << ", threads " << th;
+    }
+  }
 }
 
 TEST_P(Batch, NoHeapAllocation)

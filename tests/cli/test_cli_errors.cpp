@@ -220,6 +220,30 @@ TEST_F(CliTest, InvalidNamespaceFailsCleanly)
   }
 }
 
+// A robot without a degree of freedom (fixed base, every joint fixed): no dynamics to generate, a
+// clear error (from a URDF and from a scene); the same URDF as a free body generates.
+TEST_F(CliTest, NoMovingJointFailsCleanly)
+{
+  writeFile(dir() / "rig.urdf", R"(<robot name="rig">
+  <link name="base"><inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="camera"><inertial><mass value="0.2"/><inertia ixx="1e-3" iyy="1e-3" izz="1e-3" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="mount" type="fixed"><parent link="base"/><child link="camera"/><origin xyz="0 0 0.1"/></joint>
+</robot>
+)");
+  writeFile(dir() / "rig.xml", R"(<scene name="rig"><robot urdf="rig.urdf"/></scene>
+)");
+  const std::string urdf = (dir() / "rig.urdf").string(), scene = (dir() / "rig.xml").string();
+  expectFailsCleanly(dir(), [&](const std::string & out) {
+    return std::vector<std::string>{"generate", urdf, "--out", out};
+  }, {"rig.urdf", "robot 'rig'", "no moving joint", "--floating-base"});
+  expectFailsCleanly(dir(), [&](const std::string & out) {
+    return std::vector<std::string>{"generate", "--scene", scene, "--out", out};
+  }, {"rig.xml", "robot 'rig'", "no moving joint"});
+  const Result r = rbdgen({"generate", urdf, "--floating-base", "--out", "free"}, dir());
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(dir() / "free" / "rig" / "dynamics.hpp"));
+}
+
 TEST_F(CliTest, UnwritableOutputDirFailsCleanly)
 {
   // A path under a regular file cannot be created, even by root.

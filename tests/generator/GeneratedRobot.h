@@ -19,6 +19,9 @@ struct GeneratedFunctions
   void (*velocityTorques)(const S * q, const S * alpha, S * tau);
   void (*gravityTorques)(const S * q, S * tau);
   void (*massMatrix)(const S * q, S * H);                  ///< nv x nv
+  /// mass_matrix_packed(q) put back into nv x nv by mass_matrix_entries (both triangles; the
+  /// entries it leaves out are 0)
+  void (*massMatrixPacked)(const S * q, S * H);
   void (*forwardDynamics)(const S * q, const S * alpha, const S * tau, S * alphaD);
   void (*forwardDynamicsAba)(const S * q, const S * alpha, const S * tau, S * alphaD);
   void (*forwardDynamicsCrba)(const S * q, const S * alpha, const S * tau, S * alphaD);

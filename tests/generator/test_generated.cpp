@@ -168,7 +168,7 @@ TEST_P(Generated, MassMatrixAndForwardDynamics)
   Reference ref(g());
   rbdtest::Rng rng(3);
   rbd::ForwardDynamics fdr(ref.mb());
-  ErrorLog hLog{"mass_matrix"}, fdLog{"forward_dynamics"}, abaLog{"forward_dynamics_aba"}, crbaLog{"forward_dynamics_crba"};
+  ErrorLog hLog{"mass_matrix"}, hpLog{"mass_matrix_packed"}, fdLog{"forward_dynamics"}, abaLog{"forward_dynamics_aba"}, crbaLog{"forward_dynamics_crba"};
   std::printf("[ %-24s ] %s\n", "forward_dynamics", g().forwardDynamicsAlgorithm);
   const int nv = g().nv;
   Eigen::MatrixXd H(nv, nv);
@@ -187,6 +187,10 @@ TEST_P(Generated, MassMatrixAndForwardDynamics)
     g().d.massMatrix(q.data(), H.data());
     g().f.massMatrix(qf.data(), HF.data());
     hLog.add(err(H, Href), err(HF, Href));
+    // the packed entries (and 0 for those it leaves out) against the runtime's H
+    g().d.massMatrixPacked(q.data(), H.data());
+    g().f.massMatrixPacked(qf.data(), HF.data());
+    hpLog.add(err(H, Href), err(HF, Href));
     // Massless-subtree policy: no forward dynamics exactly where the mass matrix is singular
     // (rank-revealing LU of the runtime's H).
     const bool rankDeficient = Eigen::FullPivLU<Eigen::MatrixXd>(Href).rank() < nv;
@@ -223,8 +227,11 @@ TEST_P(Generated, MassMatrixAndForwardDynamics)
   }
   std::printf("[ %-24s ] worst cond(H) %.3g%s\n", "forward_dynamics", worstCond,
               singular ? " (singular mass matrix at every state: has_forward_dynamics = false)" : "");
-  EXPECT_LE(hLog.worstDouble, kTolDouble);
-  EXPECT_LE(hLog.worstFloat, kTolFloatDynamics);
+  for(const ErrorLog * l : {&hLog, &hpLog})
+  {
+    EXPECT_LE(l->worstDouble, kTolDouble) << l->what;
+    EXPECT_LE(l->worstFloat, kTolFloatDynamics) << l->what;
+  }
 }
 
 TEST_P(Generated, JacobianAndCenterOfMass)

@@ -95,6 +95,8 @@ TEST_P(MimicCoupling, EqualsTheFullModelProjected)
     g.d.massMatrix(q.data(), HF.data());
     const Eigen::MatrixXd Hc = G.transpose() * HF * G;
     check("mass_matrix", H, Hc, 1e-13);
+    g.coupled.massMatrixPacked(qc.data(), H.data());
+    check("mass_matrix_packed", H, Hc, 1e-13);
 
     Eigen::VectorXd C(nv), CF(nvf);
     g.coupled.nonlinearEffects(qc.data(), a.data(), C.data());

@@ -16,6 +16,8 @@ struct SceneAdapter
   int nq, nv, nwrenches, ncontacts;
   bool hasForwardDynamics;
   void (*massMatrix)(const double * q, double * H);
+  /// mass_matrix_packed(q) put back into nv x nv by mass_matrix_entries (0 for the entries left out)
+  void (*massMatrixPacked)(const double * q, double * H);
   void (*inverseDynamics)(const double * q, const double * alpha, const double * alphaD, const double * w, double * tau);
   void (*forwardDynamics)(const double * q, const double * alpha, const double * tau, const double * w, double * alphaD);
   void (*generalizedBias)(const double * q, const double * alpha, const double * w, double * out);

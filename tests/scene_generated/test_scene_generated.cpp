@@ -162,7 +162,7 @@ TEST_P(SceneGenerated, Dynamics)
   Reference ref(g());
   rbdtest::Rng rng(1);
   const int nv = g().nv;
-  Log lH{"mass_matrix"}, lID{"inverse_dynamics"}, lFD{"forward_dynamics"}, lB{"generalized_bias"},
+  Log lH{"mass_matrix"}, lHp{"mass_matrix_packed"}, lID{"inverse_dynamics"}, lFD{"forward_dynamics"}, lB{"generalized_bias"},
       lG{"gravity_torques"}, lV{"velocity_torques"}, lN{"nonlinear_effects"}, lC{"contact_forces"};
   Eigen::MatrixXd H(nv, nv);
   Vec out(nv);
@@ -173,6 +173,8 @@ TEST_P(SceneGenerated, Dynamics)
     const auto W = toWrenches(s.w);
     g().massMatrix(s.q.data(), H.data());
     lH.add(err(H, ref.dyn.massMatrix(s.q)));
+    g().massMatrixPacked(s.q.data(), H.data());
+    lHp.add(err(H, ref.dyn.massMatrix(s.q)));
     g().inverseDynamics(s.q.data(), s.alpha.data(), s.alphaD.data(), s.w.data(), out.data());
     lID.add(err(out, ref.dyn.inverseDynamics(s.q, s.alpha, s.alphaD, W)));
     if(g().generalizedBias)
@@ -220,7 +222,7 @@ TEST_P(SceneGenerated, Dynamics)
     EXPECT_GE(active, 10) << "the random states must put contacts in the ground";
     EXPECT_LT(active, kStates * g().ncontacts) << "and some out of it";
   }
-  for(const Log * l : {&lH, &lID, &lFD, &lB, &lG, &lV, &lN, &lC})
+  for(const Log * l : {&lH, &lHp, &lID, &lFD, &lB, &lG, &lV, &lN, &lC})
   {
     EXPECT_LE(l->worst, kTol) << l->what;
   }

@@ -179,6 +179,15 @@ TEST(SceneMimic, EveryFunctionIsTheFullModelProjected)
     const full::Tangent<double> af = G * alpha, adf = G * alphaD;
     const MatX<double> H = G.transpose() * full::mass_matrix<double>(qf) * G;
     EXPECT_LT(relErr(ns::mass_matrix<double>(q), H), 1e-13);
+    {
+      // the packed lower triangle (every entry with coupled mimic joints), both triangles
+      MatX<double> Hp = MatX<double>::Zero(ns::nv, ns::nv);
+      const auto packed = ns::mass_matrix_packed<double>(q);
+      for(std::size_t k = 0; k < packed.size(); ++k)
+        Hp(ns::mass_matrix_entries[k].row, ns::mass_matrix_entries[k].col) =
+            Hp(ns::mass_matrix_entries[k].col, ns::mass_matrix_entries[k].row) = packed[k];
+      EXPECT_LT(relErr(Hp, H), 1e-13);
+    }
     EXPECT_LT(relErr(ns::gravity_torques<double>(q), G.transpose() * full::gravity_torques<double>(qf)), 1e-13);
     EXPECT_LT(relErr(ns::velocity_torques<double>(q, alpha), G.transpose() * full::velocity_torques<double>(qf, af)), 1e-13);
     EXPECT_LT(relErr(ns::nonlinear_effects<double>(q, alpha), G.transpose() * full::nonlinear_effects<double>(qf, af)), 1e-13);

@@ -5,6 +5,7 @@
 
 #include "../passes/CompositeInertia.h"
 #include "Functions.h"
+#include "Template.h"
 
 namespace rbdgen::emit
 {
@@ -143,7 +144,31 @@ MassMatrixLower massMatrixLowerBody(const RobotModel & rm, const std::vector<dou
     for(int s : slot[static_cast<std::size_t>(r)]) row += (row.empty() ? "" : ", ") + std::to_string(s);
     out.slots += fmt::format("    {}, // row {}\n", row, r);
   }
+  for(int r = 0; r < rm.nv; ++r)
+  {
+    std::string row;
+    int n = 0;
+    for(int c = 0; c <= r; ++c)
+    {
+      if(slot[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] < 0) continue;
+      if(n > 0 && n % 10 == 0) row += "\n   ";
+      row += fmt::format(" {{{}, {}}},", r, c);
+      ++n;
+    }
+    if(n > 0) out.entries += "   " + row + "\n";
+  }
+  out.entries = out.entries.empty() ? "{}" : "{{\n" + out.entries + "}}";
   return out;
+}
+
+std::string massMatrixPackedText(const MassMatrixLower * sparse, int nv)
+{
+  const std::string text = selectSections(templateText("mass_matrix_packed.hpp.in"), {{"sparse", sparse != nullptr}},
+                                          "templates/mass_matrix_packed.hpp.in");
+  if(!sparse) return fillTemplate(text, {}, "templates/mass_matrix_packed.hpp.in");
+  return fillTemplate(text,
+                      {{"nnz", std::to_string(sparse->nnz)}, {"nv2", std::to_string(nv * nv)}, {"entries", sparse->entries}},
+                      "templates/mass_matrix_packed.hpp.in");
 }
 
 EmittedBody forwardDynamicsBody(const RobotModel & rm, const FdOptions & opt)

@@ -58,14 +58,21 @@ EmittedBody inverseDynamicsWrenchesBody(const RobotModel & rm);
 /// the body of `detail::mass_matrix_lower(q, put)`: reads q, calls put(r, c, H(r, c)) for every
 /// entry of the lower triangle (r >= c) that is not structurally zero, row by row; nnz: their count;
 /// slots: the initialiser lines of detail::mass_matrix_slot (nv x nv, row-major: the call index of
-/// H(r, c) = H(c, r), -1 for a structural zero).
+/// H(r, c) = H(c, r), -1 for a structural zero); entries: the initialiser of mass_matrix_entries ({row, col}
+/// per call, a line per row of H).
 struct MassMatrixLower
 {
   EmittedBody body;
   int nnz = 0;
   std::string slots;
+  std::string entries;
 };
 MassMatrixLower massMatrixLowerBody(const RobotModel & rm, const std::vector<double> & armature = {});
+/// The public packed mass matrix (templates/mass_matrix_packed.hpp.in: MassMatrixEntry, mass_matrix_nnz,
+/// mass_matrix_entries, mass_matrix_packed(q)), placed after mass_matrix: from `sparse`'s
+/// detail::mass_matrix_lower (its entries, nv x nv = nv2), or, with nullptr (coupled mimic joints), the
+/// whole lower triangle of mass_matrix(q).
+std::string massMatrixPackedText(const MassMatrixLower * sparse, int nv);
 /// Options of the CRBA + LTDL forward dynamics (the plain header uses the defaults).
 struct FdOptions
 {

@@ -9,12 +9,19 @@
 namespace rbdgen::emit
 {
 
+/// Which of the header's optional functions exist (and are instantiated).
+struct InstantiatedFunctions
+{
+  bool forwardDynamics = false;
+  bool derivatives = false;
+};
+
 /// The header's closing section: `extern template` declarations for float and double.
-std::string externInstantiations(const std::string & ns, bool forwardDynamics, bool derivatives);
+std::string externInstantiations(const std::string & ns, const InstantiatedFunctions & f);
 
 /// NS/dynamics_<scalar>.cpp: the explicit instantiation definitions for `scalar` ("double" or
 /// "float"; first line: `provenance`).
-std::string instantiationSource(const std::string & ns, const std::string & scalar, bool forwardDynamics, bool derivatives,
+std::string instantiationSource(const std::string & ns, const std::string & scalar, const InstantiatedFunctions & f,
                                 const std::string & provenance);
 
 } // namespace rbdgen::emit

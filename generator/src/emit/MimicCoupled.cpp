@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "../codegen/Expr.h"
+#include "Functions.h"
 #include "RobotValues.h"
 #include "Template.h"
 
@@ -157,6 +158,7 @@ std::string mimicCoupledSection(const rbd::parsers::MimicCoupling & c, const std
                                         "+ dense L D L^T factorisation"
                                       : "none (singular coupled mass matrix)";
   v["has_forward_dynamics"] = forwardDynamics ? "true" : "false";
+  v["mass_matrix_packed"] = massMatrixPackedText(nullptr, c.nv);
   const std::string text = selectSections(templateText("mimic_coupled.hpp.in"),
                                           {{"forward_dynamics", forwardDynamics},
                                            {"no_forward_dynamics", !forwardDynamics},

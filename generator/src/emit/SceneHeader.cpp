@@ -472,6 +472,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
   if(contacts) v["fn_contact_forces"] = fmt::format("  res = independent::contact_forces<S>({});", kExpandedQA);
   v["fn_mass_matrix"] = fmt::format("  H = project_matrix<S>(independent::mass_matrix<S>({}));", kExpandedQ);
   v["mass_matrix_lower"] = "";
+  v["mass_matrix_packed"] = massMatrixPackedText(nullptr, static_cast<int>(coupling.nv));
   if(gravity) v["fn_gravity_torques"] = projected("tau", "gravity_torques", kExpandedQ);
   if(velocity) v["fn_velocity_torques"] = projected("tau", "velocity_torques", kExpandedQA);
   if(gravity || velocity) v["fn_nonlinear_effects"] = projected("tau", "nonlinear_effects", kExpandedQA);

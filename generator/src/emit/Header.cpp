@@ -161,9 +161,7 @@ void massMatrixValues(std::map<std::string, std::string> & v, const RobotModel &
 {
   const MassMatrixLower m = massMatrixLowerBody(rm, armature);
   v["mass_matrix_lower"] = fillTemplate(templateText("mass_matrix_lower.hpp.in"),
-                                        {{"nnz", std::to_string(m.nnz)},
-                                         {"slots", m.slots},
-                                         {"body", m.body.text}},
+                                        {{"nnz", std::to_string(m.nnz)}, {"slots", m.slots}, {"body", m.body.text}},
                                         "templates/mass_matrix_lower.hpp.in");
   v["mass_matrix_packed"] = massMatrixPackedText(&m, rm.nv);
   v["fn_mass_matrix"] = "  detail::mass_matrix_lower<S>(q, [&H](int r, int c, const S & x) RBDGEN_INLINE_LAMBDA { H(r, c) = H(c, r) = x; });";

@@ -40,8 +40,9 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
                        const std::string & sourceHash, const std::string & options, bool derivatives = false,
                        const rbd::parsers::MimicCoupling & coupling = {});
 
-/// The values `mass_matrix_lower` (detail::mass_matrix_lower, its slot table) and `fn_mass_matrix`
-/// (mass_matrix's body: H from mass_matrix_lower) of a plain or scene header.
+/// The values `mass_matrix_lower` (detail::mass_matrix_lower, its slot table), `mass_matrix_packed`
+/// (the public packed H and its entries) and `fn_mass_matrix` (mass_matrix's body: H from
+/// mass_matrix_lower) of a plain or scene header.
 void massMatrixValues(std::map<std::string, std::string> & values, const RobotModel & rm,
                       const std::vector<double> & armature);
 

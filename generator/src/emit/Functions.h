@@ -115,12 +115,12 @@ void writePointColumns(cg::Block & b, const MovingJoint & mj, const passes::Join
                        const cg::Vec3 & p);
 /// Reads `kin` (Kinematics<S>) and `body` (Body); fills `J` (6 x nv, world axes at the link origin).
 EmittedBody jacobianBody(const RobotModel & rm);
-/// Reads `body`, q; fills the columns of `body`'s support path in `J` (world axes, at the world
-/// origin) and returns the link's world pose (the body of detail::support_jacobian).
-EmittedBody supportJacobianBody(const RobotModel & rm);
-/// Reads `body`, q (and `point`, link coordinates, when withPoint); fills `J` (6 x nv, world axes at
-/// the link origin or the point) computing only the link's support path.
-EmittedBody jacobianFromConfigBody(const RobotModel & rm, bool withPoint);
+/// The header's detail functions for Jacobians from q (plain and scene headers): one step function
+/// per moving joint (detail::support_step_<tag>, passes::supportStepFunctions: its columns at the
+/// world origin), detail::move_columns, and detail::support_jacobian(body, q, point, J), a switch
+/// with one straight-line case per link that fills the columns of the link's support path in `J`
+/// (world axes, at `point` given in link coordinates) and returns the link's world pose.
+std::string supportJacobianDefinitions(const RobotModel & rm);
 /// Reads `kin`; returns the centre of mass in world coordinates in `com`.
 EmittedBody centerOfMassBody(const RobotModel & rm);
 /// Reads q; returns the centre of mass in `com` (joint frames only, no link poses).

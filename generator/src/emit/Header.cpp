@@ -132,7 +132,7 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
         pairs);
   }
   v["fn_jacobian"] = jacobianBody(rm).text;
-  v["fn_support_jacobian"] = supportJacobianBody(rm).text;
+  v["support_jacobian"] = supportJacobianDefinitions(rm);
   v["support_tables"] = passes::supportPathTables(rm);
   v["fn_center_of_mass"] = centerOfMassBody(rm).text;
   v["fn_center_of_mass_q"] = centerOfMassFromConfigBody(rm).text;

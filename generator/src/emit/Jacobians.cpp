@@ -1,5 +1,5 @@
 // Link Jacobians along the support path of a link given at run time, from precomputed kinematics
-// (leaf to root by direct jumps) or from q (root to leaf over the path table, nothing computed off
+// (leaf to root by direct jumps) or from q (one straight-line case per link, nothing computed off
 // the path; Jdot alpha is computed from these columns by the header's detail::jdot_from_columns),
 // and the Jacobian of the centre of mass.
 #include <fmt/format.h>
@@ -18,25 +18,19 @@ namespace
 {
 
 // Columns of joint k at the world origin, world axes: w = R s_w, u = R s_v - w x o_k
-// (R = E_0_k^T, o_k its origin); the column at a point p is [w; u + w x p].
-void writeOriginColumns(Block & b, const MovingJoint & mj, const JointKernel & K, const Xform & X0)
+// (R = E_0_k^T, o_k its origin), every entry (zeros too) into the 6-vectors col0, col1, ...; the
+// column at a point p is [w; u + w x p].
+void writeOriginColumns(Block & b, const JointKernel & K, const Xform & X0)
 {
-  for(int d = 0; d < mj.nv; ++d)
+  for(std::size_t d = 0; d < K.S.size(); ++d)
   {
-    const Motion & Sd = K.S[static_cast<std::size_t>(d)];
-    const std::string h = fmt::format("J_{}_{}", mj.tag, d);
+    const Motion & Sd = K.S[d];
+    const std::string h = fmt::format("J_{}", d);
     const Vec3 w = tmul(b, X0.E, Sd.w, h + "_w");
     const Vec3 u = sub(b, tmul(b, X0.E, Sd.v, h + "_Rv"), cross(b, w, X0.r, h + "_wxo"), h + "_u");
-    writeColumn(b, "J", mj.vIndex + d, w, u);
+    for(int r = 0; r < 3; ++r) b.line(fmt::format("col{}({}) = {};", d, r, Block::text(w[r])));
+    for(int r = 0; r < 3; ++r) b.line(fmt::format("col{}({}) = {};", d, r + 3, Block::text(u[r])));
   }
-}
-
-// The point p (world) of link `body` after a path loop: its origin, or the given point in link coordinates.
-void declarePoint(Block & b, const RobotModel & rm, bool withPoint)
-{
-  emitLinkPoseFromWalk(b, rm, withPoint);
-  b.line(withPoint ? "const Eigen::Matrix<S, 3, 1> p = link_o + link_E.transpose() * point;"
-                   : "const Eigen::Matrix<S, 3, 1> & p = link_o;");
 }
 
 } // namespace
@@ -56,19 +50,6 @@ void writePointColumns(Block & b, const MovingJoint & mj, const JointKernel & K,
   }
 }
 
-EmittedBody supportJacobianBody(const RobotModel & rm)
-{
-  Block b;
-  emitPathLoop(b, rm, "q", [&](int k, const JointKernel & K, const Xform & X0) {
-    writeOriginColumns(b, rm.joints[static_cast<std::size_t>(k)], K, X0);
-  });
-  emitLinkPoseFromWalk(b, rm, true);
-  // (returned, not assigned to the caller's variables: declared before the walk, g++ 12 kept them
-  // in memory and jacobian(q) of ur5 took 112 instead of 69 ns)
-  b.line("return {link_E, link_o};");
-  return finish(b);
-}
-
 EmittedBody jacobianBody(const RobotModel & rm)
 {
   // Column of dof d of joint k (world axes, at the link origin p):
@@ -83,26 +64,168 @@ EmittedBody jacobianBody(const RobotModel & rm)
   return finish(b);
 }
 
-EmittedBody jacobianFromConfigBody(const RobotModel & rm, bool withPoint)
+std::string supportJacobianDefinitions(const RobotModel & rm)
 {
-  Block b;
-  emitPathLoop(b, rm, "q", [&](int k, const JointKernel & K, const Xform & X0) {
-    writeOriginColumns(b, rm.joints[static_cast<std::size_t>(k)], K, X0);
+  std::string out = "/// J(:, c) = [w; v + w x p] from m = [w; v], a column at the world origin, and p (world); with\n"
+                    "/// !turns (w = 0, a translation): [w; v].\n"
+                    "template<class S, bool turns>\n"
+                    "RBDGEN_INLINE void put_column(Eigen::Matrix<S, 6, nv> & J, int c, const Eigen::Matrix<S, 6, 1> & m,\n"
+                    "                              [[maybe_unused]] const Eigen::Matrix<S, 3, 1> & p) noexcept\n"
+                    "{\n"
+                    "  J(0, c) = m(0);\n"
+                    "  J(1, c) = m(1);\n"
+                    "  J(2, c) = m(2);\n"
+                    "  if constexpr(turns)\n"
+                    "  {\n"
+                    "    J(3, c) = m(3) + (m(1) * p(2) - m(2) * p(1));\n"
+                    "    J(4, c) = m(4) + (m(2) * p(0) - m(0) * p(2));\n"
+                    "    J(5, c) = m(5) + (m(0) * p(1) - m(1) * p(0));\n"
+                    "  }\n"
+                    "  else\n"
+                    "  {\n"
+                    "    J(3, c) = m(3);\n"
+                    "    J(4, c) = m(4);\n"
+                    "    J(5, c) = m(5);\n"
+                    "  }\n"
+                    "}\n\n"
+                    "/// Columns [c0, c0 + n) of J set to zero (one function for every range: a block expression per\n"
+                    "/// size was a template instance each).\n"
+                    "template<class S>\n"
+                    "RBDGEN_INLINE void zero_columns(Eigen::Matrix<S, 6, nv> & J, int c0, int n) noexcept\n"
+                    "{\n"
+                    "  for(int c = c0; c < c0 + n; ++c)\n"
+                    "    for(int r = 0; r < 6; ++r) J(r, c) = S(0);\n"
+                    "}\n\n"
+                    "// One step of the walk from q along a support path per moving joint: walk_E, walk_o from the\n"
+                    "// world pose of the joint's parent body to its own; the joint's columns at the world origin in\n"
+                    "// col0, col1... (every entry).\n";
+  // which velocity coordinates have an angular part (only those change with the point); the
+  // columns are separate 6-vectors written whole by the steps, so that the compilers keep them in
+  // registers (a 6 x 6 block for a free joint, zero-initialised, stayed in memory)
+  std::vector<std::vector<bool>> turns(rm.joints.size());
+  auto colParams = [](const MovingJoint & mj) {
+    std::string params;
+    for(int d = 0; d < mj.nv; ++d) params += fmt::format(", Eigen::Matrix<S, 6, 1> & col{}", d);
+    return params;
+  };
+  out += supportStepFunctions(rm, "support_step", colParams, [&](Block & b, int k, const JointKernel & K, const Xform & X0) {
+    writeOriginColumns(b, K, X0);
+    for(const Motion & Sd : K.S) turns[static_cast<std::size_t>(k)].push_back(!(Sd.w[0].isZero() && Sd.w[1].isZero() && Sd.w[2].isZero()));
   });
-  declarePoint(b, rm, withPoint);
-  b.comment("move the path's columns from the world origin to p: v += w x p");
-  b.line("for(int i = 0; i < walk_depth; ++i)");
-  b.line("{");
-  b.line("  const auto k = static_cast<std::size_t>(walk_path[static_cast<std::size_t>(i)]);");
-  b.line("  for(int c = detail::dof_begin[k]; c < detail::dof_begin[k] + detail::dof_count[k]; ++c)");
-  b.line("  {");
-  b.line("    const S wx = J(0, c), wy = J(1, c), wz = J(2, c);");
-  b.line("    J(3, c) += wy * p(2) - wz * p(1);");
-  b.line("    J(4, c) += wz * p(0) - wx * p(2);");
-  b.line("    J(5, c) += wx * p(1) - wy * p(0);");
-  b.line("  }");
-  b.line("}");
-  return finish(b);
+  // one function per joint's own link (X_owner_link = identity): its walk keeping each joint's
+  // columns, its pose, the columns at the point; a link fixed to it at an offset calls it with the
+  // point in the owner's coordinates (so the code grows with the joints' path lengths, not the links')
+  std::vector<int> frameLink(rm.joints.size(), -1);
+  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
+  {
+    const BodyFrame & bf = rm.bodies[i];
+    const bool identity = bf.X_owner_link.translation().isZero(0.0) && bf.X_owner_link.rotation().isIdentity(0.0);
+    if(bf.owner >= 0 && identity && frameLink[static_cast<std::size_t>(bf.owner)] < 0) frameLink[static_cast<std::size_t>(bf.owner)] = static_cast<int>(i);
+  }
+  std::string cases, fixedLinks; // (the fixed links' functions after all their owners')
+  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
+  {
+    const BodyFrame & bf = rm.bodies[i];
+    cases += fmt::format("  case Body::{0}: return support_jacobian_{0}<S>(q, point, J);\n", bf.ident);
+    const int frame = bf.owner < 0 ? -1 : frameLink[static_cast<std::size_t>(bf.owner)];
+    if(frame >= 0 && frame != static_cast<int>(i))
+    {
+      // X_0_link = X_c X_0_owner, X_c = (E_c, r_c); the point in the owner's coordinates: r_c + E_c^T point
+      const BodyFrame & owner = rm.bodies[static_cast<std::size_t>(frame)];
+      Block b;
+      const Xform C = linkXform(bf);
+      const Vec3 po = add(b, C.r, tmul(b, C.E, vec3Var("point"), "po_Et"), "po");
+      b.line(fmt::format("const Eigen::Matrix<S, 3, 1> point_owner({}, {}, {});", Block::text(po[0]), Block::text(po[1]), Block::text(po[2])));
+      b.line(fmt::format("const Pose<S> owner = support_jacobian_{}<S>(q, point_owner, J);", owner.ident));
+      Xform O;
+      for(int r = 0; r < 3; ++r)
+        for(int c = 0; c < 3; ++c) O.E(r, c) = Scalar::var(fmt::format("owner.rotation({}, {})", r, c));
+      for(int r = 0; r < 3; ++r) O.r[r] = Scalar::var(fmt::format("owner.translation({})", r));
+      b.line("Pose<S> link;");
+      writePose(b, "link", compose(b, C, O, "L_" + bf.ident));
+      b.line("return link;");
+      fixedLinks += fmt::format("/// link '{}': fixed to '{}'\n"
+                         "template<class S>\n"
+                         "inline Pose<S> support_jacobian_{}(const Config<S> & q, const Eigen::Matrix<S, 3, 1> & point,\n"
+                         "    Eigen::Matrix<S, 6, nv> & J) noexcept\n"
+                         "{{\n{}}}\n\n",
+                         bf.name, owner.name, bf.ident, b.str("  "));
+      continue;
+    }
+    Block b;
+    const std::vector<int> path = bf.owner < 0 ? std::vector<int>{} : rm.path(bf.owner);
+    for(int k : path)
+    {
+      const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
+      std::string names;
+      for(int d = 0; d < mj.nv; ++d) names += fmt::format("{}col_{}_{}", d ? ", " : "", mj.tag, d);
+      b.line(fmt::format("Eigen::Matrix<S, 6, 1> {};", names));
+    }
+    const Xform X = emitLinkWalk(b, rm, bf, "support_step", [](const MovingJoint & mj) {
+      std::string args;
+      for(int d = 0; d < mj.nv; ++d) args += fmt::format(", col_{}_{}", mj.tag, d);
+      return args;
+    });
+    b.line("Pose<S> link;");
+    writePose(b, "link", X);
+    if(!path.empty())
+    {
+      // p = o_link + E_link^T point, from the symbolic pose (reading `link` back would wait on its stores)
+      const Vec3 p = add(b, X.r, tmul(b, X.E, vec3Var("point"), "p_Et"), "p");
+      b.line(fmt::format("const Eigen::Matrix<S, 3, 1> p({}, {}, {});", Block::text(p[0]), Block::text(p[1]), Block::text(p[2])));
+    }
+    for(int k : path)
+    {
+      const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
+      for(int d = 0; d < mj.nv; ++d)
+        b.line(fmt::format("detail::put_column<S, {}>(J, {}, col_{}_{}, p);",
+                           turns[static_cast<std::size_t>(k)][static_cast<std::size_t>(d)] ? "true" : "false", mj.vIndex + d, mj.tag, d));
+    }
+    // the other columns: zero
+    std::vector<bool> onPath(static_cast<std::size_t>(rm.nv), false);
+    for(int k : path)
+    {
+      const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
+      for(int d = 0; d < mj.nv; ++d) onPath[static_cast<std::size_t>(mj.vIndex + d)] = true;
+    }
+    for(int c = 0; c < rm.nv;)
+    {
+      if(onPath[static_cast<std::size_t>(c)])
+      {
+        ++c;
+        continue;
+      }
+      int n = 1;
+      while(c + n < rm.nv && !onPath[static_cast<std::size_t>(c + n)]) ++n;
+      b.line(fmt::format("detail::zero_columns<S>(J, {}, {});", c, n));
+      c += n;
+    }
+    b.line("return link;");
+    std::string joints;
+    for(int k : path) joints += " '" + rm.joints[static_cast<std::size_t>(k)].name + "'";
+    out += fmt::format("/// link '{}': {}\n"
+                       "template<class S>\n"
+                       "inline Pose<S> support_jacobian_{}([[maybe_unused]] const Config<S> & q,\n"
+                       "    [[maybe_unused]] const Eigen::Matrix<S, 3, 1> & point, [[maybe_unused]] Eigen::Matrix<S, 6, nv> & J) noexcept\n"
+                       "{{\n{}}}\n\n",
+                       bf.name, path.empty() ? "on the world, no moving joint" : "support path" + joints, bf.ident, b.str("  "));
+  }
+  out += fixedLinks;
+  out += "/// From q, along `body`'s support path only: J (world axes, at `point`, given in link coordinates;\n"
+         "/// the columns of the joints off the path are zero); returns the link's world pose. Shared by\n"
+         "/// jacobian() and jacobian_dot_times_alpha() from q.\n"
+         "template<class S>\n"
+         "inline Pose<S> support_jacobian(Body body, const Config<S> & q, const Eigen::Matrix<S, 3, 1> & point,\n"
+         "                                Eigen::Matrix<S, 6, nv> & J) noexcept\n"
+         "{\n"
+         "  switch(body)\n"
+         "  {\n" +
+         cases +
+         "  }\n"
+         "  J.setZero(); // (not a Body)\n"
+         "  return {Eigen::Matrix<S, 3, 3>::Identity(), Eigen::Matrix<S, 3, 1>::Zero()};\n"
+         "}";
+  return out;
 }
 
 EmittedBody comJacobianBody(const RobotModel & rm)

@@ -191,9 +191,9 @@ std::string outputs(const RobotModel & rm, const rbd::scene::Scene & scene, cons
   }
   else if(o.kinematics)
   {
-    v["support_tables"] = passes::supportPathTables(rm);
+    v["support_tables"] = passes::supportPathTables(rm) + "\n\n" + supportJacobianDefinitions(rm);
     v["fn_forward_kinematics"] = forwardKinematicsBody(rm).text;
-    v["fn_jacobian_q_point"] = jacobianFromConfigBody(rm, true).text;
+    v["fn_jacobian_q_point"] = "  detail::support_jacobian<S>(body, q, point, J);";
   }
   if(com)
     v["fn_center_of_mass"] = coupled ? fmt::format("  com = independent::center_of_mass<S>({});", kExpandedQ) : centerOfMassQBody(rm).text;

@@ -72,7 +72,7 @@ void assignPose(Block & b, const std::string & E, const std::string & o, const X
 std::string supportPathTables(const RobotModel & rm)
 {
   const std::size_t D = maxDepth(rm);
-  std::string depth, paths, angles;
+  std::string depth, paths;
   for(const BodyFrame & bf : rm.bodies)
   {
     const std::vector<int> path = bf.owner < 0 ? std::vector<int>{} : rm.path(bf.owner);
@@ -84,22 +84,20 @@ std::string supportPathTables(const RobotModel & rm)
   std::string begin, count;
   for(const MovingJoint & mj : rm.joints)
   {
-    angles += fmt::format("{}{}", angles.empty() ? "" : ", ", hasAngle(mj) ? mj.qIndex : 0);
     begin += fmt::format("{}{}", begin.empty() ? "" : ", ", mj.vIndex);
     count += fmt::format("{}{}", count.empty() ? "" : ", ", mj.nv);
   }
   if(!paths.empty()) paths.pop_back();
   const std::size_t slots = std::max<std::size_t>(rm.joints.size(), 1);
   return fmt::format("/// Support paths (moving joints from the root to each link's owner, root first) for the functions\n"
-                     "/// that take a Body and q; angle_index: the q index of each moving joint's angle (0: none).\n"
+                     "/// that loop over the path of a Body given at run time.\n"
                      "constexpr int max_support_depth = {};\n"
                      "constexpr std::array<int, nbodies> support_depth = {{ {} }};\n"
                      "constexpr std::array<std::array<int, max_support_depth>, nbodies> support_path = {{{{\n{}\n}}}};\n"
-                     "constexpr std::array<int, {}> angle_index = {{ {} }};\n"
                      "/// First velocity coordinate and number of velocity coordinates of each moving joint.\n"
                      "constexpr std::array<int, {}> dof_begin = {{ {} }};\n"
                      "constexpr std::array<int, {}> dof_count = {{ {} }};",
-                     D, depth, paths, slots, angles.empty() ? "0" : angles, slots, begin.empty() ? "0" : begin, slots,
+                     D, depth, paths, slots, begin.empty() ? "0" : begin, slots,
                      count.empty() ? "0" : count);
 }
 
@@ -141,66 +139,61 @@ void emitJumpWalk(Block & b, const RobotModel & rm, const std::string & prefix, 
   b.line(label(-1) + ":;");
 }
 
-Xform emitPathLoop(Block & b, const RobotModel & rm, const std::string & q,
-                   const std::function<void(int k, const JointKernel & K, const Xform & X0)> & jointBlock)
+std::string supportStepFunctions(const RobotModel & rm, const std::string & prefix,
+                                 const std::function<std::string(const MovingJoint &)> & extraParams,
+                                 const std::function<void(Block & b, int k, const JointKernel & K, const Xform & X0)> & jointBlock)
 {
-  b.comment("the support path of `body`, root first; sin/cos of its angles in one batch");
-  b.line("const int walk_depth = detail::support_depth[static_cast<std::size_t>(body)];");
-  b.line("const auto & walk_path = detail::support_path[static_cast<std::size_t>(body)];");
-  b.line("S walk_angles[detail::max_support_depth] = {};");
-  b.line("for(int i = 0; i < walk_depth; ++i)");
-  b.line(fmt::format("  walk_angles[i] = {}[detail::angle_index[static_cast<std::size_t>(walk_path[static_cast<std::size_t>(i)])]];", q));
-  b.line("[[maybe_unused]] const auto walk_sc = detail::sincos_all(walk_angles); // (no angle on any path: unused)");
-  b.comment("world pose of the body reached so far: walk_E (world to body), walk_o (origin, world)");
-  b.line("Eigen::Matrix<S, 3, 3> walk_E = Eigen::Matrix<S, 3, 3>::Identity();");
-  b.line("Eigen::Matrix<S, 3, 1> walk_o = Eigen::Matrix<S, 3, 1>::Zero();");
-  b.line("for(int walk_i = 0; walk_i < walk_depth; ++walk_i)");
-  b.line("{");
-  b.line("switch(walk_path[static_cast<std::size_t>(walk_i)])");
-  b.line("{");
-  const AngleSinCos angles = [](int) {
-    return std::make_pair(Scalar::var("walk_sc.s[walk_i]"), Scalar::var("walk_sc.c[walk_i]"));
-  };
+  std::string out;
   const Xform walk = poseVars("walk_E", "walk_o");
   for(std::size_t k = 0; k < rm.joints.size(); ++k)
   {
     const MovingJoint & mj = rm.joints[k];
-    b.line(fmt::format("case {}: {{ // joint '{}' ({})", k, mj.name, describeJoint(mj)));
-    const JointKernel K = emitJointKernel(b, mj, q, angles);
+    Block b;
+    const AngleSinCos angles = [](int) { return std::make_pair(Scalar::var("s"), Scalar::var("c")); };
+    const JointKernel K = emitJointKernel(b, mj, "q", angles);
     const Xform Xt = treeXform(mj);
-    // X_0_k = X_j X_T X_0_p, X_0_p = identity for a joint on the world
+    // X_0_k = X_j X_T X_0_p (X_0_p = identity for a joint on the world)
     const Xform X0 = compose(b, K.Xj, mj.parent < 0 ? Xt : compose(b, Xt, walk, mj.tag + "_X0t"), mj.tag + "_X0");
-    jointBlock(static_cast<int>(k), K, X0);
+    jointBlock(b, static_cast<int>(k), K, X0);
     assignPose(b, "walk_E", "walk_o", X0);
-    b.line("} break;");
+    out += fmt::format("/// joint '{}' ({}){}\n"
+                       "template<class S>\n"
+                       "RBDGEN_INLINE void {}_{}([[maybe_unused]] const Config<S> & q, {}Eigen::Matrix<S, 3, 3> & walk_E,\n"
+                       "    [[maybe_unused]] Eigen::Matrix<S, 3, 1> & walk_o{}) noexcept\n"
+                       "{{\n{}}}\n\n",
+                       mj.name, describeJoint(mj), mj.parent < 0 ? ", on the world" : "", prefix, mj.tag,
+                       hasAngle(mj) ? "const S & s, const S & c, " : "", extraParams(mj), b.str("  "));
   }
-  b.line("default: break;");
-  b.line("}");
-  b.line("}");
-  return walk;
+  return out;
 }
 
-void emitLinkPoseFromWalk(Block & b, const RobotModel & rm, bool rotation)
+Xform emitLinkWalk(Block & b, const RobotModel & rm, const BodyFrame & bf, const std::string & prefix,
+                   const std::function<std::string(const MovingJoint &)> & extraArgs)
 {
-  b.comment("the link's world pose from its owner's: E_link = E_c walk_E, o_link = walk_o + walk_E^T r_c");
-  if(rotation) b.line("Eigen::Matrix<S, 3, 3> link_E = walk_E;");
-  b.line("Eigen::Matrix<S, 3, 1> link_o = walk_o;");
-  b.line("switch(body)");
-  b.line("{");
-  const Xform walk = poseVars("walk_E", "walk_o");
-  for(const BodyFrame & bf : rm.bodies)
+  const std::vector<int> path = bf.owner < 0 ? std::vector<int>{} : rm.path(bf.owner);
+  if(path.empty()) return linkXform(bf);
+  // the path's angles, by runs of consecutive q indices: one vectorised sin/cos per run, read in place
+  std::vector<int> angleJoints;
+  for(int k : path)
+    if(hasAngle(rm.joints[static_cast<std::size_t>(k)])) angleJoints.push_back(k);
+  std::vector<std::string> sinCos(rm.joints.size());
+  for(std::size_t i = 0, run = 0; i < angleJoints.size(); ++run)
   {
-    const sva::PTransformd & C = bf.X_owner_link;
-    if(C.translation().isZero(0.0) && (!rotation || C.rotation().isIdentity(0.0))) continue;
-    b.line(fmt::format("case Body::{}: {{", bf.ident));
-    const Xform X = compose(b, linkXform(bf), walk, "L_" + bf.ident);
-    if(rotation) assignPose(b, "link_E", "link_o", X, "walk_E", "walk_o");
-    else
-      for(int i = 0; i < 3; ++i) b.line(fmt::format("link_o({}) = {};", i, Block::text(X.r[i])));
-    b.line("} break;");
+    std::size_t n = 1;
+    const int first = rm.joints[static_cast<std::size_t>(angleJoints[i])].qIndex;
+    while(i + n < angleJoints.size() && rm.joints[static_cast<std::size_t>(angleJoints[i + n])].qIndex == first + static_cast<int>(n)) ++n;
+    const std::string name = fmt::format("sc{}", run);
+    b.line(fmt::format("const auto {} = detail::sincos_span<S, {}>(q.data() + {});", name, n, first));
+    for(std::size_t j = 0; j < n; ++j) sinCos[static_cast<std::size_t>(angleJoints[i + j])] = fmt::format("{0}.s[{1}], {0}.c[{1}], ", name, j);
+    i += n;
   }
-  b.line("default: break;");
-  b.line("}");
+  b.line("Eigen::Matrix<S, 3, 3> walk_E = Eigen::Matrix<S, 3, 3>::Identity();");
+  b.line("Eigen::Matrix<S, 3, 1> walk_o = Eigen::Matrix<S, 3, 1>::Zero();");
+  for(int k : path)
+    b.line(fmt::format("detail::{}_{}<S>(q, {}walk_E, walk_o{});", prefix, rm.joints[static_cast<std::size_t>(k)].tag,
+                       sinCos[static_cast<std::size_t>(k)], extraArgs(rm.joints[static_cast<std::size_t>(k)])));
+  // X_0_link = X_owner_link X_0_owner (the owner's pose is the walk's end)
+  return compose(b, linkXform(bf), poseVars("walk_E", "walk_o"), "L_" + bf.ident);
 }
 
 } // namespace rbdgen::passes

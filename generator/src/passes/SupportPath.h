@@ -1,10 +1,12 @@
 #pragma once
 // Support paths: the moving joints that move one link, from the root to the link's owner.
 // Functions that take a `Body` at run time walk only that link's path, with each joint's block
-// emitted once (code grows with the number of joints, not with the sum of the path lengths):
+// emitted once:
 //  - from precomputed kinematics (kin.frame[k]), leaf to root by direct jumps (emitJumpWalk);
-//  - from q, root to leaf over a constexpr table of paths (emitPathLoop): one batched sin/cos of
-//    the path's angles, then one `case` per joint updating the world pose of the walk.
+//  - from q, root to leaf: one function per link calling one step function per joint of its path
+//    (supportStepFunctions, emitLinkWalk), so each link's walk is straight-line code with its
+//    path, angles and columns known at compile time (one call line per joint of each path: the
+//    sum of the path lengths, 416 for talos_reduced with a free base).
 
 #include <functional>
 #include <string>
@@ -15,9 +17,9 @@
 namespace rbdgen::passes
 {
 
-/// The constexpr tables of the header's detail namespace that emitPathLoop reads:
-/// support_depth[body], support_path[body][i] (root first), angle_index[joint] (q index of the
-/// joint's angle, 0 when it has none), max_support_depth, dof_begin[joint] and dof_count[joint] (its velocity coordinates).
+/// The constexpr tables of the header's detail namespace that loops over a path read (e.g.
+/// detail::jdot_from_columns): support_depth[body], support_path[body][i] (root first),
+/// max_support_depth, dof_begin[joint] and dof_count[joint] (its velocity coordinates).
 std::string supportPathTables(const RobotModel & rm);
 
 /// Leaf to root from link `body` (a run-time value named `body`):
@@ -27,16 +29,24 @@ std::string supportPathTables(const RobotModel & rm);
 void emitJumpWalk(Block & b, const RobotModel & rm, const std::string & prefix, const std::string & what,
                   const std::function<void(int k, const MovingJoint & mj)> & jointBlock);
 
-/// Root to leaf along the support path of link `body` (a run-time value), reading q from `q`.
-/// Declares `Eigen::Matrix<S, 3, 3> walk_E` and `Eigen::Matrix<S, 3, 1> walk_o`, the world pose
-/// (rotation, origin) of the last body visited (world at the start), and the loop index `walk_i`.
-/// jointBlock(k, kernel, X0) emits joint k's work given its kernel and its body's world pose X0;
-/// walk_E / walk_o are updated after it. Returns the symbolic world pose of the walk's end.
-Xform emitPathLoop(Block & b, const RobotModel & rm, const std::string & q,
-                   const std::function<void(int k, const JointKernel & K, const Xform & X0)> & jointBlock);
+/// The walk from q along support paths, one step function per moving joint (emitted once; the
+/// path switch calls them, and they inline into a straight line per link):
+///   template<class S> RBDGEN_INLINE void <prefix>_<tag>(const Config<S> & q[, const S & s, const S & c],
+///       Eigen::Matrix<S, 3, 3> & walk_E, Eigen::Matrix<S, 3, 1> & walk_o<extraParams(joint)>) noexcept
+/// takes the world pose of the joint's parent body (walk_E: world to body, walk_o: its origin in the
+/// world; not read for a joint on the world) to the joint's body; s and c are the sin and cos of its
+/// angle (joints with one). jointBlock(b, k, K, X0) emits the joint's own work between the two, given
+/// its kernel K and its body's world pose X0.
+std::string supportStepFunctions(const RobotModel & rm, const std::string & prefix,
+                                 const std::function<std::string(const MovingJoint &)> & extraParams,
+                                 const std::function<void(Block & b, int k, const JointKernel & K, const Xform & X0)> & jointBlock);
 
-/// The world origin of link `body` (`link_o`) and, with rotation, its rotation (`link_E`), from the
-/// pose of its owner at the end of a path loop: a switch over the links, constants folded.
-void emitLinkPoseFromWalk(Block & b, const RobotModel & rm, bool rotation);
+/// The walk from q to link bf (straight-line code, its path known at generation time): the sin and
+/// cos of the path's angles (read from q in contiguous runs: detail::sincos_span), then walk_E,
+/// walk_o advanced by one <prefix>_<tag>(q, ..., walk_E, walk_o<extraArgs(joint)>) call per joint of the
+/// path, root first. Returns the link's symbolic world pose (its constant offset from its owner
+/// folded; a constant for a link on the world, whose path is empty).
+Xform emitLinkWalk(Block & b, const RobotModel & rm, const BodyFrame & bf, const std::string & prefix,
+                   const std::function<std::string(const MovingJoint &)> & extraArgs);
 
 } // namespace rbdgen::passes

@@ -14,6 +14,10 @@ cxx="${3:-g++}"
 before_commit=622c618
 shared="$root/../shared/robots"
 robots=("solo12:HR_LOWER_LEG,HR_FOOT" "talos_reduced:leg_right_6_link,right_sole_link")
+if [ ! -d "$shared" ]; then
+  echo "jacobian_before_after: needs the real robots in $shared (solo12, talos_reduced)" >&2
+  exit 2
+fi
 work="$(mktemp -d)"
 cleanup() {
   git -C "$root" worktree remove --force "$work/src" > /dev/null 2>&1 || true
@@ -38,7 +42,8 @@ for spec in "${robots[@]}"; do
   for version in before after; do
     gen="$rbdgen"
     [ "$version" = before ] && gen="$before"
-    "$gen" generate "$shared/$robot.urdf" --floating-base --namespace "${robot}_$version" --out "$work/gen" > /dev/null 2>&1
+    "$gen" generate "$shared/$robot.urdf" --floating-base --namespace "${robot}_$version" --out "$work/gen" > /dev/null 2> "$work/warnings" \
+      || { cat "$work/warnings" >&2; exit 1; }
     echo "jacobian_before_after: compiling ${robot}_$version ($(wc -l < "$work/gen/${robot}_$version/dynamics.hpp") lines)" >&2
     "$cxx" "${flags[@]}" -DRBDGEN_NS="${robot}_$version" -DRBDGEN_ROBOT="\"$robot\"" -DRBDGEN_VERSION_TAG="\"$version\"" \
       -c "$root/bench/tools/jacobian_path/Wrapper.cpp" -o "$work/${robot}_$version.o"

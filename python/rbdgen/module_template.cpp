@@ -78,6 +78,18 @@ struct GeneratedModel
     if(n > 0) return g::batch::mass_matrix<double>(q, H, static_cast<std::size_t>(n));
     RowMajorMap<g::nv, g::nv>{H} = g::mass_matrix<double>(Q(Eigen::Map<const Q>(q)));
   }
+  std::vector<std::array<int, 2>> massMatrixEntries() const
+  {
+    std::vector<std::array<int, 2>> entries;
+    for(const auto & e : g::mass_matrix_entries) entries.push_back({e.row, e.col});
+    return entries;
+  }
+  void massMatrixPacked(Workspace &, const double * q, double * Hp, std::ptrdiff_t n) const
+  {
+    if(n > 0) return g::batch::mass_matrix_packed<double>(q, Hp, static_cast<std::size_t>(n));
+    const auto packed = g::mass_matrix_packed<double>(Q(Eigen::Map<const Q>(q)));
+    std::copy(packed.begin(), packed.end(), Hp);
+  }
   void forwardDynamics([[maybe_unused]] Workspace & ws, [[maybe_unused]] const double * q,
                        [[maybe_unused]] const double * v, [[maybe_unused]] const double * tau,
                        [[maybe_unused]] double * a, [[maybe_unused]] std::ptrdiff_t n) const

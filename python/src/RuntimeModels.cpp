@@ -30,6 +30,34 @@ Eigen::MatrixXd couplingMatrix(const rbd::parsers::MimicCoupling & c, int nvFull
   return G;
 }
 
+/// The entries (row >= col, row by row) of H = G^T H_full G that are not structurally zero: H_full(i, j)
+/// can be nonzero only when the joint of dof i supports the joint of dof j or the other way round.
+std::vector<std::array<int, 2>> massMatrixPattern(const rbd::MultiBody & mb, const Eigen::MatrixXd & G)
+{
+  const int n = mb.nrDof();
+  std::vector<int> jointOf(static_cast<std::size_t>(n));
+  for(int j = 0; j < mb.nrJoints(); ++j)
+    for(int d = 0; d < mb.joint(j).dof(); ++d) jointOf[static_cast<std::size_t>(mb.jointPosInDof(j) + d)] = j;
+  auto supports = [&mb](int a, int b) { // joint a on the path from the root to joint b
+    for(; b >= 0; b = mb.parent(b))
+      if(b == a) return true;
+    return false;
+  };
+  Eigen::MatrixXd full = Eigen::MatrixXd::Zero(n, n);
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+    {
+      const int a = jointOf[static_cast<std::size_t>(i)], b = jointOf[static_cast<std::size_t>(j)];
+      if(supports(a, b) || supports(b, a)) full(i, j) = 1;
+    }
+  const Eigen::MatrixXd coupled = G.cwiseAbs().transpose() * full * G.cwiseAbs();
+  std::vector<std::array<int, 2>> entries;
+  for(int r = 0; r < G.cols(); ++r)
+    for(int c = 0; c <= r; ++c)
+      if(coupled(r, c) != 0) entries.push_back({r, c});
+  return entries;
+}
+
 } // namespace
 
 // --- UrdfModel -----------------------------------------------------------------------------------
@@ -46,6 +74,7 @@ UrdfModel::UrdfModel(const std::string & path, bool floatingBase, const std::str
   coupling_ = rbd::parsers::coupleMimics(r, path, &warnings_);
   if(coupling_.empty()) coupling_ = rbd::parsers::independentJoints(mb_);
   G_ = couplingMatrix(coupling_, mb_.nrDof());
+  massMatrixEntries_ = massMatrixPattern(mb_, G_);
   for(const auto & b : mb_.bodies())
   {
     const auto it = r.bodyBaseTransforms.find(b.name());
@@ -205,6 +234,7 @@ SceneModel::SceneModel(const std::string & path)
   coupling_ = rbd::parsers::coupleMimics(robot.robot, scene.urdf, &warnings_);
   if(coupling_.empty()) coupling_ = rbd::parsers::independentJoints(dyn_->mb());
   G_ = couplingMatrix(coupling_, dyn_->nv());
+  massMatrixEntries_ = massMatrixPattern(dyn_->mb(), G_);
   for(const auto & b : dyn_->mb().bodies()) links_.push_back(b.name());
 }
 

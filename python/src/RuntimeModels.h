@@ -10,6 +10,7 @@
 // H = G^T H_full G, J = J_full G, forward dynamics through the coupled H).
 // Poses and Jacobians are those of the URDF link frames (= the MultiBody body frames except for
 // bodies moved by backward joints, see ParserResult::bodyBaseTransforms), as in the generated code.
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -63,6 +64,8 @@ public:
   void forwardKinematics(Workspace & ws, const double * q, double * out) const;
   void inverseDynamics(Workspace & ws, const double * q, const double * v, const double * a, double * tau) const;
   void massMatrix(Workspace & ws, const double * q, double * H) const;
+  /// (row, col) of the entries of H that are not structurally zero, row >= col, row by row.
+  const std::vector<std::array<int, 2>> & massMatrixEntries() const { return massMatrixEntries_; }
   void forwardDynamics(Workspace & ws, const double * q, const double * v, const double * tau, double * a) const;
   void jacobian(Workspace & ws, int body, const double * q, double * J) const;
   void centerOfMass(Workspace & ws, const double * q, double * c) const;
@@ -86,6 +89,7 @@ private:
   rbd::MultiBody mb_;
   rbd::parsers::MimicCoupling coupling_;
   Eigen::MatrixXd G_; ///< full nv x coupled nv
+  std::vector<std::array<int, 2>> massMatrixEntries_;
   std::string name_;
   std::vector<sva::PTransformd> X_body_link_; ///< per body: MultiBody body frame -> URDF link frame
   std::vector<std::string> warnings_;
@@ -116,6 +120,8 @@ public:
   void forwardKinematics(Workspace &, const double * q, double * out) const;
   void inverseDynamics(Workspace &, const double * q, const double * v, const double * a, double * tau) const;
   void massMatrix(Workspace &, const double * q, double * H) const;
+  /// (row, col) of the entries of H that are not structurally zero, row >= col, row by row.
+  const std::vector<std::array<int, 2>> & massMatrixEntries() const { return massMatrixEntries_; }
   void forwardDynamics(Workspace &, const double * q, const double * v, const double * tau, double * a) const;
   void jacobian(Workspace &, int body, const double * q, double * J) const;
   void centerOfMass(Workspace &, const double * q, double * c) const;
@@ -140,6 +146,7 @@ private:
   std::unique_ptr<rbd::scene::SceneDynamics> dyn_;
   rbd::parsers::MimicCoupling coupling_;
   Eigen::MatrixXd G_; ///< full nv x coupled nv
+  std::vector<std::array<int, 2>> massMatrixEntries_;
   std::string name_;
   std::vector<std::string> links_;
   std::vector<std::string> warnings_;
@@ -203,6 +210,20 @@ public:
   void massMatrix(Workspace & ws, const double * q, double * H) const
   {
     with(ws, [&](const auto & m, auto & w) { m.massMatrix(w, q, H); });
+  }
+  std::vector<std::array<int, 2>> massMatrixEntries() const
+  {
+    return call([](const auto & m) { return m.massMatrixEntries(); });
+  }
+  /// The entries of massMatrixEntries(), in its order, from the model's mass matrix.
+  void massMatrixPacked(Workspace & ws, const double * q, double * Hp) const
+  {
+    with(ws, [&](const auto & m, auto & w) {
+      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> H(m.nv(), m.nv());
+      m.massMatrix(w, q, H.data());
+      std::size_t k = 0;
+      for(const auto & [r, c] : m.massMatrixEntries()) Hp[k++] = H(r, c);
+    });
   }
   void forwardDynamics(Workspace & ws, const double * q, const double * v, const double * tau, double * a) const
   {

@@ -29,6 +29,16 @@ def rel_err(x, ref):
     return float(np.max(np.abs(np.asarray(x) - ref)) / max(1.0, float(np.max(np.abs(ref)))))
 
 
+def unpack_mass_matrix(robot, packed):
+    """The mass matrix (nv, nv), or (N, nv, nv) for a batch, from mass_matrix_packed's values and
+    mass_matrix_entries (each entry and its mirror; every other entry 0)."""
+    e = robot.mass_matrix_entries
+    H = np.zeros(packed.shape[:-1] + (robot.nv, robot.nv))
+    H[..., e[:, 0], e[:, 1]] = packed
+    H[..., e[:, 1], e[:, 0]] = packed
+    return H
+
+
 # A robot of rbdgen.compile evaluates a batch on SIMD packs (NS/batch.hpp), a single state with the
 # single-state function: each lane does the same operations, bitwise equal when the compiler does not
 # fuse a*b + c; with FMA (the modules' -march=native on a CPU with FMA) it fuses them differently in

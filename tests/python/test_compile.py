@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import rbdgen
-from conftest import ROBOTS, ROOT, SCENES, assert_simd_close, random_states, rel_err, simd_growth
+from conftest import ROBOTS, ROOT, SCENES, assert_simd_close, random_states, rel_err, simd_growth, unpack_mass_matrix
 
 BOUND = 1e-12  # max |generated - runtime| / max(1, max |runtime|), as tests/generator/test_generated
 
@@ -82,6 +82,10 @@ def test_generated_equals_runtime(pair):
     assert rel_err(compiled.forward_kinematics(q), runtime.forward_kinematics(q)) < BOUND
     assert rel_err(compiled.inverse_dynamics(q, v, a), runtime.inverse_dynamics(q, v, a)) < BOUND
     assert rel_err(compiled.mass_matrix(q), runtime.mass_matrix(q)) < BOUND
+    # the packed mass matrix: its entries put back give H (the others are structural zeros)
+    entries = compiled.mass_matrix_entries
+    assert entries.shape[1] == 2 and np.all(entries[:, 0] >= entries[:, 1])
+    assert rel_err(unpack_mass_matrix(compiled, compiled.mass_matrix_packed(q)), runtime.mass_matrix(q)) < BOUND
     assert rel_err(compiled.center_of_mass(q), runtime.center_of_mass(q)) < BOUND
     for body in runtime.body_names:
         assert rel_err(compiled.jacobian(body, q), runtime.jacobian(body, q)) < BOUND, body
@@ -143,6 +147,7 @@ def test_compiled_batches_run_on_simd_packs(pair, n):
         (lambda th: compiled.forward_kinematics(q, threads=th), lambda i: compiled.forward_kinematics(q[i]), False),
         (lambda th: compiled.inverse_dynamics(q, v, a, threads=th), lambda i: compiled.inverse_dynamics(q[i], v[i], a[i]), False),
         (lambda th: compiled.mass_matrix(q, threads=th), lambda i: compiled.mass_matrix(q[i]), False),
+        (lambda th: compiled.mass_matrix_packed(q, threads=th), lambda i: compiled.mass_matrix_packed(q[i]), False),
         (lambda th: compiled.forward_dynamics(q, v, a, threads=th), lambda i: compiled.forward_dynamics(q[i], v[i], a[i]), True),
         (lambda th: compiled.jacobian(body, q, threads=th), lambda i: compiled.jacobian(body, q[i]), False),
         (lambda th: compiled.center_of_mass(q, threads=th), lambda i: compiled.center_of_mass(q[i]), False),

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import rbdgen
-from conftest import ROBOTS, SCENES, random_states, rel_err
+from conftest import ROBOTS, ROOT, SCENES, random_states, rel_err, unpack_mass_matrix
 
 G = 9.81
 
@@ -77,6 +77,27 @@ def test_mass_matrix_columns_are_inverse_dynamics_differences(ur5e, quadruped):
             assert rel_err(H, cols) < 1e-12
             np.testing.assert_array_equal(H, H.T)
             assert np.linalg.eigvalsh(H).min() > 0
+
+
+def test_mass_matrix_packed_is_mass_matrix_without_its_structural_zeros(ur5e, quadruped):
+    """mass_matrix_entries comes from the kinematic tree (dofs i, j with one joint supporting the other)
+    and mass_matrix(q) from CRBA: the entries left out are exactly 0 in H, the packed values are H's
+    (one state and a batch); the quadruped's legs do not couple, the free base couples with all; a
+    mimic gripper's coupled H (G^T H G) keeps the pattern of G^T pattern G."""
+    mimic = rbdgen.Robot.from_urdf(ROOT / "tests" / "generator" / "mimic_gripper.urdf")
+    for robot, floating in [(ur5e, False), (quadruped, True), (mimic, False)]:
+        q, _, _ = random_states(robot, 4, seed=5, floating=floating)
+        entries = robot.mass_matrix_entries
+        H = robot.mass_matrix(q)
+        np.testing.assert_array_equal(unpack_mass_matrix(robot, robot.mass_matrix_packed(q)), H)
+        for i in range(len(q)):
+            np.testing.assert_array_equal(robot.mass_matrix_packed(q[i]), H[i][entries[:, 0], entries[:, 1]])
+        assert np.all(entries[:, 0] >= entries[:, 1])
+        assert len({tuple(e) for e in entries}) == len(entries)
+    n = ur5e.nv
+    assert len(ur5e.mass_matrix_entries) == n * (n + 1) // 2  # a chain: every pair is on one path
+    # the free base's 6 x 6 triangle, each of the 12 leg dofs with the 6 base dofs, each leg's 3 x 3 triangle
+    assert len(quadruped.mass_matrix_entries) == 21 + 12 * 6 + 4 * 6
 
 
 def test_forward_dynamics_inverts_inverse_dynamics(ur5e, quadruped):

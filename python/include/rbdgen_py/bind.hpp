@@ -9,6 +9,9 @@
 //   void forwardKinematics(Workspace &, const double * q, double * out);  // nbodies x 4 x 4
 //   void inverseDynamics(Workspace &, const double * q, const double * v, const double * a, double * tau);
 //   void massMatrix(Workspace &, const double * q, double * H);              // nv x nv
+//   std::vector<std::array<int, 2>> massMatrixEntries();  (row, col) of H's entries that are not
+//                                   structurally zero, row >= col; massMatrixPacked writes them:
+//   void massMatrixPacked(Workspace &, const double * q, double * Hp);      // massMatrixEntries().size()
 //   void forwardDynamics(Workspace &, const double * q, const double * v, const double * tau, double * a);
 //   void jacobian(Workspace &, int body, const double * q, double * J);    // 6 x nv
 //   void centerOfMass(Workspace &, const double * q, double * c);          // 3
@@ -284,6 +287,38 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
       },
       py::arg("q"), py::kw_only(), py::arg("threads") = 1,
       doc("Joint-space inertia matrix H(q), (nv, nv).").c_str());
+
+  cls.def_property_readonly(
+      "mass_matrix_entries",
+      [](const R & r) {
+        const auto entries = r.model().massMatrixEntries();
+        py::array_t<int> a({static_cast<py::ssize_t>(entries.size()), py::ssize_t{2}});
+        auto w = a.mutable_unchecked<2>();
+        for(std::size_t k = 0; k < entries.size(); ++k)
+        {
+          w(static_cast<py::ssize_t>(k), 0) = entries[k][0];
+          w(static_cast<py::ssize_t>(k), 1) = entries[k][1];
+        }
+        return a;
+      },
+      "(nnz, 2) int array: the (row, col) of the entries of the mass matrix that are not structurally zero, "
+      "row >= col (H is symmetric; every other entry is 0); mass_matrix_packed(q)[k] is H[row_k, col_k]");
+
+  cls.def(
+      "mass_matrix_packed",
+      [](R & r, const py::object & q, int threads) {
+        const Model & md = r.model();
+        const std::array<Input, 1> in{checkInput("mass_matrix_packed", "q", q, md.nq())};
+        const auto nnz = static_cast<py::ssize_t>(md.massMatrixEntries().size());
+        return r.run("mass_matrix_packed", in, {md.nq()}, {nnz}, threads,
+                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t states) {
+                       callModel(md, &Model::massMatrixPacked, states, ws, p[0], o);
+                     });
+      },
+      py::arg("q"), py::kw_only(), py::arg("threads") = 1,
+      doc("The entries of H(q) listed by mass_matrix_entries, (nnz,): the mass matrix without its structural "
+          "zeros (a compiled robot's batch computes only these).")
+          .c_str());
 
   cls.def(
       "forward_dynamics",

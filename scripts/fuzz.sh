@@ -2,7 +2,8 @@
 # Fuzz URDF text -> loader -> model -> emitted header (fuzz/fuzz_urdf, libFuzzer) for
 # RBDGEN_FUZZ_SECONDS (default 60) from the seed corpus fuzz/corpus. libFuzzer needs clang, so this
 # is its own build directory: clang++ -O1 -g with -fsanitize=fuzzer-no-link,address,undefined, only
-# the libraries the target needs. Any crash, sanitizer report, leak or undocumented exception fails
+# the libraries the target needs (the runtime and scene libraries, which only models the loader
+# accepted reach, without UBSan: see fuzz/CMakeLists.txt). Any crash, sanitizer report, leak or undocumented exception fails
 # (the input is kept in BUILD_DIR/artifacts/ and belongs in tests/cli/bad and fuzz/corpus).
 # Usage: scripts/fuzz.sh [BUILD_DIR]   (default: build-fuzz). Called by scripts/test.sh.
 set -euo pipefail

@@ -56,46 +56,11 @@ inline rbd::Joint randomAnyJoint(rbdtest::Rng & rng, int k)
 
 /// A graph b0 - b1 - ... - b{n-1}: body k gets inertia(k), joint k links b{k-1} to b{k} with a
 /// random static transform whose translation is at most maxOffset in each coordinate.
-inline rbd::MultiBodyGraph chainGraph(rbdtest::Rng & rng, int n, const InertiaFn & inertia, const JointFn & joint,
-                                      double maxOffset = 0.5)
-{
-  rbd::MultiBodyGraph g;
-  for(int k = 0; k < n; ++k) g.addBody(rbd::Body(inertia(rng, k), "b" + std::to_string(k)));
-  for(int k = 1; k < n; ++k)
-  {
-    const rbd::Joint j = joint(rng, k);
-    g.addJoint(j);
-    // one draw per statement (argument evaluation order differs between g++ and clang++)
-    const sva::PTransformd X_p_j = rbdtest::randomTransform(rng, maxOffset);
-    const sva::PTransformd X_c_j = rbdtest::randomTransform(rng, 0.1);
-    g.linkBodies("b" + std::to_string(k - 1), X_p_j, "b" + std::to_string(k), X_c_j, j.name());
-  }
-  return g;
-}
+rbd::MultiBodyGraph chainGraph(rbdtest::Rng & rng, int n, const InertiaFn & inertia, const JointFn & joint,
+                                double maxOffset = 0.5);
 
 /// A star: b0 with `branches` chains of `depth` revolute links each.
-inline rbd::MultiBodyGraph wideTreeGraph(rbdtest::Rng & rng, int branches, int depth)
-{
-  rbd::MultiBodyGraph g;
-  g.addBody(rbd::Body(rbdtest::randomInertia(rng), "b0"));
-  int k = 0;
-  for(int b = 0; b < branches; ++b)
-  {
-    std::string parent = "b0";
-    for(int d = 0; d < depth; ++d)
-    {
-      ++k;
-      const std::string name = "b" + std::to_string(k);
-      g.addBody(rbd::Body(rbdtest::randomInertia(rng), name));
-      const rbd::Joint j = randomRev(rng, k);
-      g.addJoint(j);
-      const sva::PTransformd X_p_j = rbdtest::randomTransform(rng), X_c_j = rbdtest::randomTransform(rng, 0.1);
-      g.linkBodies(parent, X_p_j, name, X_c_j, j.name());
-      parent = name;
-    }
-  }
-  return g;
-}
+rbd::MultiBodyGraph wideTreeGraph(rbdtest::Rng & rng, int branches, int depth);
 
 /// Every runtime output the hard cases look at, for one state.
 template<typename T>
@@ -114,54 +79,9 @@ struct Outputs
 
 /// Evaluate everything at the state in mbc (q, alpha, alphaD, jointTorque); FD only when withFd.
 template<typename T>
-Outputs<T> evaluate(const rbd::MultiBodyTpl<T> & mb, rbd::MultiBodyConfigTpl<T> mbc, bool withFd = true)
-{
-  Outputs<T> o;
-  dyntest::kinematics(mb, mbc);
-  o.poses.resize(12 * mb.nrBodies());
-  for(int i = 0; i < mb.nrBodies(); ++i)
-  {
-    const auto & X = mbc.bodyPosW[static_cast<std::size_t>(i)];
-    o.poses.template segment<9>(12 * i) = Eigen::Map<const VecX<T>>(X.rotation().data(), 9);
-    o.poses.template segment<3>(12 * i + 9) = X.translation();
-  }
-  {
-    rbd::MultiBodyConfigTpl<T> c = mbc;
-    rbd::InverseDynamicsTpl<T> id(mb);
-    id.inverseDynamics(mb, c);
-    o.tau = rbd::dofToVector(mb, c.jointTorque);
-  }
-  rbd::ForwardDynamicsTpl<T> fd(mb);
-  fd.computeH(mb, mbc);
-  fd.computeC(mb, mbc);
-  o.H = fd.H();
-  o.C = fd.C();
-  rbd::JacobianTpl<T> jac(mb, mb.body(mb.nrBodies() - 1).name());
-  MatX<T> full(6, mb.nrDof());
-  jac.fullJacobian(mb, jac.jacobian(mb, mbc), full);
-  o.J = full;
-  if(withFd)
-  {
-    rbd::MultiBodyConfigTpl<T> c = mbc;
-    fd.forwardDynamics(mb, c);
-    o.fdCrba = rbd::dofToVector(mb, c.alphaD);
-    o.hasFd = true;
-    // ABA throws std::runtime_error (documented, rbd/ABA.h) when an articulated inertia D is not
-    // positive definite in T: the caller decides whether that is acceptable for the case.
-    try
-    {
-      rbd::ForwardDynamicsABATpl<T> aba(mb);
-      aba.forwardDynamics(mb, c);
-      o.fdAba = rbd::dofToVector(mb, c.alphaD);
-    }
-    catch(const std::runtime_error &)
-    {
-      o.abaThrew = true;
-      o.fdAba = o.fdCrba;
-    }
-  }
-  return o;
-}
+Outputs<T> evaluate(const rbd::MultiBodyTpl<T> & mb, rbd::MultiBodyConfigTpl<T> mbc, bool withFd = true);
+extern template Outputs<double> evaluate(const rbd::MultiBody &, rbd::MultiBodyConfig, bool);
+extern template Outputs<LD> evaluate(const rbd::MultiBodyTpl<LD> &, rbd::MultiBodyConfigTpl<LD>, bool);
 
 template<typename T>
 bool allFinite(const Outputs<T> & o)
@@ -199,13 +119,7 @@ struct Errors
   }
 };
 
-inline std::ostream & operator<<(std::ostream & os, const Errors & e)
-{
-  return os << "poses " << e.poses << ", tau " << e.tau << ", H " << e.H << ", C " << e.C << ", J " << e.J << ", FD(CRBA) "
-            << e.fdCrba << ", FD(ABA) " << e.fdAba << ", ABA vs CRBA " << e.abaVsCrba << ", cond(H) " << e.condH
-            << ", FD error / (cond(H) eps) " << std::max(e.worstRatio, e.fdOverCondEps()) << (e.abaThrew ? ", ABA threw" : "")
-            << (e.finite ? "" : ", NOT FINITE");
-}
+std::ostream & operator<<(std::ostream & os, const Errors & e);
 
 /// ||a - b|| / ||b|| (2-norms).
 template<typename A, typename B>
@@ -217,50 +131,17 @@ double normRel(const Eigen::MatrixBase<A> & a, const Eigen::MatrixBase<B> & b)
 }
 
 /// 2-norm condition number of a symmetric matrix, in long double.
-inline double conditionNumber(const MatX<LD> & H)
-{
-  if(H.size() == 0) return 1;
-  const VecX<LD> s = Eigen::JacobiSVD<MatX<LD>>(H).singularValues();
-  return static_cast<double>(s(0) / s(s.size() - 1));
-}
+double conditionNumber(const MatX<LD> & H);
 
 /// Errors of double outputs against long double ones.
-inline Errors errorsOf(const Outputs<double> & d, const Outputs<LD> & l)
-{
-  const bool withFd = d.hasFd && l.hasFd;
-  Errors e;
-  e.abaThrew = d.abaThrew || l.abaThrew;
-  e.finite = allFinite(d) && allFinite(l);
-  e.poses = rbdtest::relErr(d.poses, l.poses);
-  e.tau = rbdtest::relErr(d.tau, l.tau);
-  e.H = rbdtest::relErr(d.H, l.H);
-  e.C = rbdtest::relErr(d.C, l.C);
-  e.J = rbdtest::relErr(d.J, l.J);
-  if(withFd)
-  {
-    e.fdCrba = normRel(d.fdCrba, l.fdCrba);
-    e.fdAba = normRel(d.fdAba, l.fdAba);
-    e.abaVsCrba = normRel(d.fdAba, d.fdCrba);
-    e.condH = conditionNumber(l.H);
-  }
-  return e;
-}
+Errors errorsOf(const Outputs<double> & d, const Outputs<LD> & l);
 
 /// The state in mbc evaluated in double, against the same model and inputs in long double.
-inline Errors compare(const rbd::MultiBody & mb, const rbd::MultiBodyConfig & mbc, bool withFd = true)
-{
-  const rbd::MultiBodyTpl<LD> mbL = dyntest::castModel<LD>(mb);
-  return errorsOf(evaluate(mb, mbc, withFd), evaluate(mbL, rbdtest::castInputs<LD>(mbL, mbc), withFd));
-}
+Errors compare(const rbd::MultiBody & mb, const rbd::MultiBodyConfig & mbc, bool withFd = true);
 
 /// Random state with the given ranges (quaternions unit), then the errors of compare().
-inline Errors compareRandom(rbdtest::Rng & rng, const rbd::MultiBody & mb, bool withFd = true, double qRange = 3.0,
-                            double vRange = 2.0)
-{
-  rbd::MultiBodyConfig mbc(mb);
-  rbdtest::randomState(rng, mb, mbc, qRange, vRange);
-  return compare(mb, mbc, withFd);
-}
+Errors compareRandom(rbdtest::Rng & rng, const rbd::MultiBody & mb, bool withFd = true, double qRange = 3.0,
+                     double vRange = 2.0);
 
 /// The bounds of a hard case: every kinematic/dynamic output within kinBound (relErr), forward
 /// dynamics (both routes, and ABA against CRBA) within fdFactor * cond(H) * eps (normwise): the
@@ -273,23 +154,9 @@ struct Bounds
   bool abaMayThrow = false; ///< only where cond(H) eps is not small (H numerically singular)
 };
 
-inline ::testing::AssertionResult withinBounds(const Errors & e, const Bounds & b)
-{
-  if(!e.finite) return ::testing::AssertionFailure() << "NaN or Inf: " << e;
-  if(e.abaThrew && !b.abaMayThrow) return ::testing::AssertionFailure() << "ABA threw: " << e;
-  if(!(e.kinematicsAndDynamics() <= b.kin)) return ::testing::AssertionFailure() << "above " << b.kin << ": " << e;
-  const double fdBound = b.fdFactor * std::max(1.0, e.condH) * eps;
-  if(!(std::max({e.fdCrba, e.fdAba, e.abaVsCrba}) <= fdBound))
-    return ::testing::AssertionFailure() << "forward dynamics above " << fdBound << ": " << e;
-  return ::testing::AssertionSuccess();
-}
+::testing::AssertionResult withinBounds(const Errors & e, const Bounds & b);
 
 /// Print the worst errors of a case (the numbers quoted in the test comments).
-inline void report(const char * what, const Errors & e)
-{
-  std::ostringstream os;
-  os << e;
-  std::printf("[ %-28s ] worst: %s\n", what, os.str().c_str());
-}
+void report(const char * what, const Errors & e);
 
 } // namespace stab

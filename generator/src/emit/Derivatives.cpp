@@ -191,7 +191,11 @@ void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv)
     return std::make_pair(end[i] - i + 1, fmt::format("X.data() + {}", row * nv + i));
   };
   b.comment("Minv = H^-1: row operations along the dof tree on the identity (L^T, D, then L), X row-major");
-  b.line("Eigen::Matrix<S, nv, nv, Eigen::RowMajor> X = Eigen::Matrix<S, nv, nv, Eigen::RowMajor>::Identity();");
+  // X = 1 as zeros then the diagonal: Identity() fills entry by entry with a test per entry
+  // (talos_reduced: 3.9 % of forward_dynamics_derivatives, against 0.3 % more in memset this way)
+  b.line("Eigen::Matrix<S, nv, nv, Eigen::RowMajor> X;");
+  b.line("X.setZero();");
+  b.line("X.diagonal().setOnes();");
   for(std::size_t i = nv; i-- > 0;)
     for(int j = f.lambda[i]; j >= 0; j = f.lambda[static_cast<std::size_t>(j)])
       if(!f.L[i][static_cast<std::size_t>(j)].isZero())

@@ -219,6 +219,24 @@ inline constexpr const char * kArrayPolicy =
 
 inline std::string doc(const std::string & what) { return what + "\n\n" + kArrayPolicy; }
 
+/// Define method `name`(q, *, threads=1) of a function of q alone: q checked (shape, dtype, finite),
+/// then Model::*method over the state or the batch into an array of shape itemShape(model) per state.
+template<class R, class Method, class Shape>
+void defFunctionOfQ(py::class_<R> & cls, const char * name, Method method, Shape itemShape, const std::string & what)
+{
+  cls.def(
+      name,
+      [name, method, itemShape](R & r, const py::object & q, int threads) {
+        const auto & md = r.model();
+        const std::array<Input, 1> in{checkInput(name, "q", q, md.nq())};
+        return r.run(name, in, {md.nq()}, itemShape(md), threads,
+                     [&md, method](auto & ws, const auto & p, double * o, std::ptrdiff_t states) {
+                       callModel(md, method, states, ws, p[0], o);
+                     });
+      },
+      py::arg("q"), py::kw_only(), py::arg("threads") = 1, doc(what).c_str());
+}
+
 /// Define the Python class `name` for Robot<Model> in module m. local: visible to this module only
 /// (each module made by rbdgen.compile has its own).
 template<class Model>
@@ -243,20 +261,10 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
                + " nv=" + std::to_string(r.model().nv()) + ">";
       });
 
-  cls.def(
-      "forward_kinematics",
-      [](R & r, const py::object & q, int threads) {
-        const Model & md = r.model();
-        const std::array<Input, 1> in{checkInput("forward_kinematics", "q", q, md.nq())};
-        return r.run("forward_kinematics", in, {md.nq()}, {md.nbodies(), 4, 4}, threads,
-                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t states) {
-                       callModel(md, &Model::forwardKinematics, states, ws, p[0], o);
-                     });
-      },
-      py::arg("q"), py::kw_only(), py::arg("threads") = 1,
-      doc("World pose of every link: (nbodies, 4, 4) homogeneous transforms [R p; 0 1], R the link's "
-          "orientation in world (the transpose of sva's E), p its origin in world; (N, nbodies, 4, 4) for a batch.")
-          .c_str());
+  using Shape = std::vector<py::ssize_t>;
+  defFunctionOfQ(cls, "forward_kinematics", &Model::forwardKinematics, [](const Model & md) { return Shape{md.nbodies(), 4, 4}; },
+                 "World pose of every link: (nbodies, 4, 4) homogeneous transforms [R p; 0 1], R the link's "
+                 "orientation in world (the transpose of sva's E), p its origin in world; (N, nbodies, 4, 4) for a batch.");
 
   cls.def(
       "inverse_dynamics",
@@ -275,18 +283,8 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
       py::arg("q"), py::arg("v"), py::arg("a"), py::kw_only(), py::arg("threads") = 1,
       doc("Joint torques tau (nv,) for accelerations a at (q, v), gravity included (RNEA).").c_str());
 
-  cls.def(
-      "mass_matrix",
-      [](R & r, const py::object & q, int threads) {
-        const Model & md = r.model();
-        const std::array<Input, 1> in{checkInput("mass_matrix", "q", q, md.nq())};
-        return r.run("mass_matrix", in, {md.nq()}, {md.nv(), md.nv()}, threads,
-                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t states) {
-                       callModel(md, &Model::massMatrix, states, ws, p[0], o);
-                     });
-      },
-      py::arg("q"), py::kw_only(), py::arg("threads") = 1,
-      doc("Joint-space inertia matrix H(q), (nv, nv).").c_str());
+  defFunctionOfQ(cls, "mass_matrix", &Model::massMatrix, [](const Model & md) { return Shape{md.nv(), md.nv()}; },
+                 "Joint-space inertia matrix H(q), (nv, nv).");
 
   cls.def_property_readonly(
       "mass_matrix_entries",
@@ -304,21 +302,10 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
       "(nnz, 2) int array: the (row, col) of the entries of the mass matrix that are not structurally zero, "
       "row >= col (H is symmetric; every other entry is 0); mass_matrix_packed(q)[k] is H[row_k, col_k]");
 
-  cls.def(
-      "mass_matrix_packed",
-      [](R & r, const py::object & q, int threads) {
-        const Model & md = r.model();
-        const std::array<Input, 1> in{checkInput("mass_matrix_packed", "q", q, md.nq())};
-        const auto nnz = static_cast<py::ssize_t>(md.massMatrixEntries().size());
-        return r.run("mass_matrix_packed", in, {md.nq()}, {nnz}, threads,
-                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t states) {
-                       callModel(md, &Model::massMatrixPacked, states, ws, p[0], o);
-                     });
-      },
-      py::arg("q"), py::kw_only(), py::arg("threads") = 1,
-      doc("The entries of H(q) listed by mass_matrix_entries, (nnz,): the mass matrix without its structural "
-          "zeros (a compiled robot's batch computes only these).")
-          .c_str());
+  defFunctionOfQ(cls, "mass_matrix_packed", &Model::massMatrixPacked,
+                 [](const Model & md) { return Shape{static_cast<py::ssize_t>(md.massMatrixEntries().size())}; },
+                 "The entries of H(q) listed by mass_matrix_entries, (nnz,): the mass matrix without its structural "
+                 "zeros (a compiled robot's batch computes only these).");
 
   cls.def(
       "forward_dynamics",
@@ -408,17 +395,8 @@ py::class_<Robot<Model>> bindRobot(py::module_ & m, const char * name, const cha
           "at the link origin, J v = [w; v_origin].")
           .c_str());
 
-  cls.def(
-      "center_of_mass",
-      [](R & r, const py::object & q, int threads) {
-        const Model & md = r.model();
-        const std::array<Input, 1> in{checkInput("center_of_mass", "q", q, md.nq())};
-        return r.run("center_of_mass", in, {md.nq()}, {3}, threads,
-                     [&md](auto & ws, const auto & p, double * o, std::ptrdiff_t states) {
-                       callModel(md, &Model::centerOfMass, states, ws, p[0], o);
-                     });
-      },
-      py::arg("q"), py::kw_only(), py::arg("threads") = 1, doc("Centre of mass (3,) in world coordinates.").c_str());
+  defFunctionOfQ(cls, "center_of_mass", &Model::centerOfMass, [](const Model &) { return Shape{3}; },
+                 "Centre of mass (3,) in world coordinates.");
   return cls;
 }
 

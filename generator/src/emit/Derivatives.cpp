@@ -62,6 +62,11 @@ void emitRigidBodyDerivatives(Block & b, const RobotModel & rm, const std::optio
                   [&](int r, int col, const Scalar & dq, const Scalar & da) {
                     if(!dq.isZero()) b.line(fmt::format("d.dtau_dq({}, {}) = {};", r, col, Block::text(dq)));
                     if(!da.isZero()) b.line(fmt::format("d.dtau_dalpha({}, {}) = {};", r, col, Block::text(da)));
+                  },
+                  [&](int first, int rows, int col, const std::string & dq, const std::string & da) {
+                    for(const auto & [out, e] : {std::pair{"dtau_dq", &dq}, std::pair{"dtau_dalpha", &da}})
+                      if(!e->empty())
+                        b.line(fmt::format("d.{}.col({}).template segment<{}>({}) = {};", out, col, rows, first, *e));
                   });
   if(anyContact)
     for(std::size_t ic = 0; ic < contacts->contacts.size(); ++ic) emitContactDerivatives(ctx, m, w, r0, *contacts, ic);

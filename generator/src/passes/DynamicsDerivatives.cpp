@@ -130,6 +130,12 @@ std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<WorldB
 /// (8.3-9.0 us vs 9.6-9.9 us); below it the registers win (ur5e: 650 ns in registers, 1,350 ns
 /// through the arrays).
 constexpr int kStashDofs = 24;
+/// From this many rows on, a column's entries in the subtree of its joint, or in a run of consecutive
+/// ancestor dofs, are one vector expression (onBlock).
+constexpr int kBlockRows = 2;
+/// Blocks of rows are computed over a multiple of this many rows: Eigen picks the widest packet
+/// that divides a fixed size (18 rows: pairs of doubles; 20 rows: AVX's 4).
+constexpr int kBlockPad = 4;
 
 /// Stores the non-constant scalars in array[k][0..] and replaces them by those slots.
 void stashScalars(Block & b, const std::string & array, int k, const std::vector<Scalar *> & e)
@@ -176,8 +182,61 @@ std::vector<PairJoint> stashJoints(Block & b, const std::vector<WorldBody> & w, 
   return out;
 }
 
+namespace
+{
+
+/// The dofs of joint j's subtree as one index range [first, first + count) (RBDyn numbers dofs
+/// depth first, so a subtree's are contiguous); count = 0 when they are not.
+std::pair<int, int> subtreeDofs(const RobotModel & rm, std::size_t j)
+{
+  int lo = rm.nv, hi = -1, count = 0;
+  for(std::size_t i = j; i < rm.joints.size(); ++i)
+  {
+    bool inSub = false;
+    for(int a = static_cast<int>(i); a >= 0 && !inSub; a = rm.joints[static_cast<std::size_t>(a)].parent)
+      inSub = a == static_cast<int>(j);
+    if(!inSub || rm.joints[i].nv == 0) continue;
+    lo = std::min(lo, rm.joints[i].vIndex);
+    hi = std::max(hi, rm.joints[i].vIndex + rm.joints[i].nv);
+    count += rm.joints[i].nv;
+  }
+  if(count == 0 || hi - lo != count) return {0, 0};
+  return {lo, count};
+}
+
+/// [w; v] or [n; f] of each vector, in order, as one list of scalars.
+std::vector<Scalar> components(const std::vector<std::array<const Vec3 *, 2>> & vectors)
+{
+  std::vector<Scalar> out;
+  for(const auto & [x, y] : vectors)
+    for(const Vec3 * p : {x, y})
+      for(int i = 0; i < 3; ++i) out.push_back((*p)[i]);
+  return out;
+}
+
+/// `sum_c M.col(c).segment<rows>(first) * y_c` over the non-zero y_c (empty when all are zero).
+std::string blockColumn(const std::string & M, const std::vector<Scalar> & y, int first, int rows)
+{
+  std::string e;
+  for(std::size_t k = 0; k < y.size(); ++k)
+  {
+    if(y[k].isZero()) continue;
+    const std::string col = fmt::format("{}.col({}).template segment<{}>({})", M, k, rows, first);
+    const bool one = y[k].isConst() && y[k].label().empty() && (y[k].value() == 1.0 || y[k].value() == -1.0);
+    const bool minus = one && y[k].value() < 0;
+    std::string t = one ? col : col + " * " + Block::text(y[k]);
+    if(e.empty()) e = (minus ? "-" : "") + t;
+    else e += (minus ? " - " : " + ") + t;
+  }
+  return e;
+}
+
+} // namespace
+
 void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
-                     const Eigen::Vector3d & gravity, const std::vector<Force> & fextSums, const std::function<void(int, int, const Scalar &, const Scalar &)> & onEntry)
+                     const Eigen::Vector3d & gravity, const std::vector<Force> & fextSums,
+                     const std::function<void(int, int, const Scalar &, const Scalar &)> & onEntry,
+                     const std::function<void(int, int, int, const std::string &, const std::string &)> & onBlock)
 {
   Block & b = ctx.block();
   const RobotModel & rm = ctx.model();
@@ -187,7 +246,28 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
   std::vector<std::vector<Force>> u(n), bk(n);
   std::vector<std::vector<Motion>> s(n);
   const bool stashOn = rm.nv >= kStashDofs;
-  if(stashOn) b.line(fmt::format("S pair_u[{0}][6], pair_b[{0}][6], pair_s[{0}][6];", rm.nv));
+  // the subtree entries of a column as one vector expression over the rows of a matrix
+  // UB = [u_k^T b_k^T] (nv x 12, row k per dof): without external wrenches (they add a term per row)
+  const bool blocks = onBlock && fextSums.empty();
+  // (kBlockPad more rows, zero: a block of rows is computed over a multiple of kBlockPad rows, the
+  // size Eigen vectorises with its widest packets, and its first rows kept)
+  if(blocks)
+  {
+    b.line(fmt::format("Eigen::Matrix<S, {}, 12> pair_ub;", rm.nv + kBlockPad));
+    b.line(fmt::format("Eigen::Matrix<S, {}, 6> pair_sm;", rm.nv + kBlockPad));
+    b.line(fmt::format("pair_ub.template bottomRows<{}>().setZero();", kBlockPad));
+    b.line(fmt::format("pair_sm.template bottomRows<{}>().setZero();", kBlockPad));
+  }
+  if(stashOn && !blocks) b.line(fmt::format("S pair_u[{0}][6], pair_b[{0}][6], pair_s[{0}][6];", rm.nv));
+  // row k of matrix M (pair_ub, pair_sm): every entry written, its variables then read from M
+  auto intoMatrix = [&](const std::string & M, int k, std::vector<Scalar *> e) {
+    for(std::size_t i = 0; i < e.size(); ++i)
+    {
+      const std::string slot = fmt::format("{}({}, {})", M, k, i);
+      b.line(fmt::format("{} = {};", slot, Block::text(*e[i])));
+      if(!e[i]->isConst()) *e[i] = Scalar::var(slot);
+    }
+  };
   auto stash = [&](const std::string & array, int k, const Vec3 & x, const Vec3 & y) {
     std::array<Vec3, 2> out{x, y};
     if(!stashOn) return out;
@@ -196,24 +276,53 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
     stashScalars(b, array, k, e);
     return out;
   };
+  // rows [first, first + rows) of column col: M (pair_ub or pair_sm) times yq and ya, computed over
+  // a multiple of kBlockPad rows, its first `rows` kept
+  auto emitBlock = [&](const std::string & M, const std::vector<Scalar> & yq, const std::vector<Scalar> & ya, int first,
+                       int rows, int col, const std::string & hint) {
+    const int padded = (rows + kBlockPad - 1) / kBlockPad * kBlockPad;
+    std::array<std::string, 2> e{blockColumn(M, yq, first, padded), blockColumn(M, ya, first, padded)};
+    if(padded != rows)
+      for(std::size_t k = 0; k < 2; ++k)
+      {
+        if(e[k].empty()) continue;
+        const std::string t = hint + (k == 0 ? "q" : "a");
+        b.line(fmt::format("const Eigen::Matrix<S, {}, 1> {} = {};", padded, t, e[k]));
+        e[k] = fmt::format("{}.template head<{}>()", t, rows);
+      }
+    onBlock(first, rows, col, e[0], e[1]);
+  };
   for(std::size_t i = 0; i < n; ++i)
     for(std::size_t d = 0; d < w[i].s.size(); ++d)
     {
       const std::string h = fmt::format("{}_{}", rm.joints[i].tag, d);
       const int k = rm.joints[i].vIndex + static_cast<int>(d);
-      const Force uk = cg::apply(b, c[i].Ic, w[i].s[d], h + "u");
-      const Force bkk = sub(b, apply(b, c[i].Idc, w[i].s[d], h + "Ids"), crossDual(b, w[i].s[d], c[i].Hc, h + "sxH"), h + "b");
-      const auto us = stash("pair_u", k, uk.n, uk.f), bs = stash("pair_b", k, bkk.n, bkk.f),
-                 ss = stash("pair_s", k, w[i].s[d].w, w[i].s[d].v);
-      u[i].push_back(Force{us[0], us[1]});
-      bk[i].push_back(Force{bs[0], bs[1]});
-      s[i].push_back(Motion{ss[0], ss[1]});
+      Force uk = cg::apply(b, c[i].Ic, w[i].s[d], h + "u");
+      Force bkk = sub(b, apply(b, c[i].Idc, w[i].s[d], h + "Ids"), crossDual(b, w[i].s[d], c[i].Hc, h + "sxH"), h + "b");
+      Motion sk = w[i].s[d];
+      if(blocks)
+      {
+        intoMatrix("pair_ub", k, {&uk.n[0], &uk.n[1], &uk.n[2], &uk.f[0], &uk.f[1], &uk.f[2], &bkk.n[0], &bkk.n[1], &bkk.n[2],
+                                  &bkk.f[0], &bkk.f[1], &bkk.f[2]});
+        intoMatrix("pair_sm", k, {&sk.w[0], &sk.w[1], &sk.w[2], &sk.v[0], &sk.v[1], &sk.v[2]});
+      }
+      else
+      {
+        const auto us = stash("pair_u", k, uk.n, uk.f), bs = stash("pair_b", k, bkk.n, bkk.f);
+        const auto ss = stash("pair_s", k, sk.w, sk.v);
+        uk = Force{us[0], us[1]};
+        bkk = Force{bs[0], bs[1]};
+        sk = Motion{ss[0], ss[1]};
+      }
+      u[i].push_back(uk);
+      bk[i].push_back(bkk);
+      s[i].push_back(sk);
     }
   if(stashOn)
   {
-    b.line("detail::opaque(pair_u);");
-    b.line("detail::opaque(pair_b);");
-    b.line("detail::opaque(pair_s);");
+    const std::vector<std::string> arrays =
+        blocks ? std::vector<std::string>{"pair_ub.data()", "pair_sm.data()"} : std::vector<std::string>{"pair_u", "pair_b", "pair_s"};
+    for(const std::string & a : arrays) b.line(fmt::format("detail::opaque({});", a));
   }
   const std::vector<PairJoint> pj = stashJoints(b, w, c, stashOn);
   // a_0 = [0; -g] as the forward pass uses it (the root's inherited acceleration)
@@ -254,8 +363,14 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
         dFa = cg::add(b, cg::apply(b, cj.Ic, yaA, h + "IyaA"),
                       cg::add(b, apply(b, cj.Idc, sm, h + "Ids"), crossDual(b, sm, cj.Hc, h + "sxH"), h + "dFa2"), h + "dFa");
       }
-      // the subtree of j: joints i >= j whose support path contains j
-      for(std::size_t i = j; i < n; ++i)
+      // the subtree of j: joints i >= j whose support path contains j; as one block of rows
+      // [first, first + rows) of UB times Yq = [yaQ; yvQ] and Ya = [yaA; s] when its dofs are
+      // contiguous and each is carried (j forward)
+      const auto [first, rows] = blocks && forward ? subtreeDofs(rm, j) : std::pair<int, int>{0, 0};
+      if(rows >= kBlockRows)
+        emitBlock("pair_ub", components({{&yaQ.w, &yaQ.v}, {&yvQ.w, &yvQ.v}}), components({{&yaA.w, &yaA.v}, {&sm.w, &sm.v}}),
+                  first, rows, col, h + "B");
+      for(std::size_t i = j; i < n && rows < kBlockRows; ++i)
       {
         bool inSub = false;
         for(int a = static_cast<int>(i); a >= 0 && !inSub; a = rm.joints[static_cast<std::size_t>(a)].parent)
@@ -280,14 +395,30 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
           onEntry(row, col, dq, da);
         }
       }
+      // the strict ancestors of j: s_k . dF; with blocks, each run of consecutive dofs as one block
+      // of rows of the matrix of the s_k (SM, nv x 6) times dFq and dFa
+      std::vector<std::pair<int, const Motion *>> ancestors; // (dof, s)
       for(int a = p; a >= 0; a = rm.joints[static_cast<std::size_t>(a)].parent)
       {
         const auto ak = static_cast<std::size_t>(a);
-        for(std::size_t e = 0; e < w[ak].s.size(); ++e)
+        for(std::size_t e = 0; e < w[ak].s.size(); ++e) ancestors.emplace_back(rm.joints[ak].vIndex + static_cast<int>(e), &s[ak][e]);
+      }
+      std::sort(ancestors.begin(), ancestors.end(), [](const auto & x, const auto & y) { return x.first < y.first; });
+      for(std::size_t r0 = 0, r1 = 0; r0 < ancestors.size(); r0 = r1)
+      {
+        for(r1 = r0 + 1; r1 < ancestors.size() && ancestors[r1].first == ancestors[r1 - 1].first + 1;) ++r1;
+        const int run = static_cast<int>(r1 - r0);
+        if(blocks && run >= kBlockRows)
         {
-          const int row = rm.joints[ak].vIndex + static_cast<int>(e);
+          emitBlock("pair_sm", components({{&dFq.n, &dFq.f}}), components({{&dFa.n, &dFa.f}}), ancestors[r0].first, run, col,
+                    fmt::format("{}A{}", h, ancestors[r0].first));
+          continue;
+        }
+        for(std::size_t r = r0; r < r1; ++r)
+        {
+          const int row = ancestors[r].first;
           const std::string hk = fmt::format("d{}_{}", row, col);
-          onEntry(row, col, dot(b, s[ak][e], dFq, hk + "q"), dot(b, s[ak][e], dFa, hk + "a"));
+          onEntry(row, col, dot(b, *ancestors[r].second, dFq, hk + "q"), dot(b, *ancestors[r].second, dFa, hk + "a"));
         }
       }
       if(stashOn) b.line("}();");

@@ -10,8 +10,14 @@
 //                 dtau_k/dq_m = u_k . (a_w x s_m + (s_m x w) x w) + b_k . (w x s_m)
 //                 dtau_k/dalpha_m = u_k . (sdot_m + w x s_m) + b_k . s_m
 //                 and for k on a strict ancestor a of j: s_k . dF_j (the force change of j's subtree).
+//                 With u_k, b_k as the rows of UB (nv x 12) and the s_k as the rows of SM (nv x 6), a
+//                 column's entries over a contiguous range of rows (j's subtree: RBDyn numbers dofs
+//                 depth first; a run of consecutive ancestor dofs, e.g. a floating base's six) are one
+//                 product UB[rows] [yaQ; yvQ], UB[rows] [yaA; s_m], SM[rows] dF_j, which Eigen vectorises
+//                 over the rows.
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "ForwardMotion.h"
@@ -50,9 +56,14 @@ std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<WorldB
 /// handed over are zero. gravity: the world gravity of the forward pass (m/s^2), a_0 = [0; -gravity]
 /// (zero: none). fextSums: when not empty, per joint the sum over its subtree of the external
 /// wrenches (world, at the world origin) that the inverse dynamics subtracts, held constant: they
-/// add s_k . (s_m x* Fext_i) to the pairs whose s_k moves with joint m.
+/// add s_k . (s_m x* Fext_i) to the pairs whose s_k moves with joint m. onBlock (optional, not
+/// with fextSums): the entries of rows [first, first + rows) of column col, the subtree of the
+/// column's joint, as Eigen expressions (empty: zero) over `pair_ub` (nv x 12, row k = [u_k; b_k],
+/// declared and filled here) instead of one onEntry per entry.
 void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
                      const Eigen::Vector3d & gravity, const std::vector<Force> & fextSums,
-                     const std::function<void(int row, int col, const Scalar & dq, const Scalar & da)> & onEntry);
+                     const std::function<void(int row, int col, const Scalar & dq, const Scalar & da)> & onEntry,
+                     const std::function<void(int first, int rows, int col, const std::string & dq, const std::string & da)> &
+                         onBlock = {});
 
 } // namespace rbdgen::passes

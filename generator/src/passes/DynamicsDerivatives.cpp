@@ -133,6 +133,10 @@ constexpr int kStashDofs = 24;
 /// From this many rows on, a column's entries in the subtree of its joint, or in a run of consecutive
 /// ancestor dofs, are one vector expression (onBlock).
 constexpr int kBlockRows = 2;
+/// Blocks only for a tree with a subtree of at least this many dofs: on the 6- and 7-dof arms
+/// (subtrees of 1 to 7 rows) the ID derivatives ran as fast with blocks as without, and g++'s
+/// forward_dynamics_derivatives of ur5 (which calls them) 18 % slower (910 -> 1,100 ns).
+constexpr int kBlockRobotRows = 8;
 /// Blocks of rows are computed over a multiple of this many rows: Eigen picks the widest packet
 /// that divides a fixed size (18 rows: pairs of doubles; 20 rows: AVX's 4).
 constexpr int kBlockPad = 4;
@@ -214,20 +218,15 @@ std::vector<Scalar> components(const std::vector<std::array<const Vec3 *, 2>> & 
   return out;
 }
 
-/// `sum_c M.col(c).segment<rows>(first) * y_c` over the non-zero y_c (empty when all are zero).
-std::string blockColumn(const std::string & M, const std::vector<Scalar> & y, int first, int rows)
+/// detail::rows_times<padded>(M, first, {y...}) (rows [first, first + padded) of M y), its first
+/// `rows` entries; empty when every y_c is zero.
+std::string blockColumn(const std::string & M, const std::vector<Scalar> & y, int first, int rows, int padded)
 {
-  std::string e;
-  for(std::size_t k = 0; k < y.size(); ++k)
-  {
-    if(y[k].isZero()) continue;
-    const std::string col = fmt::format("{}.col({}).template segment<{}>({})", M, k, rows, first);
-    const bool one = y[k].isConst() && y[k].label().empty() && (y[k].value() == 1.0 || y[k].value() == -1.0);
-    const bool minus = one && y[k].value() < 0;
-    std::string t = one ? col : col + " * " + Block::text(y[k]);
-    if(e.empty()) e = (minus ? "-" : "") + t;
-    else e += (minus ? " - " : " + ") + t;
-  }
+  if(std::all_of(y.begin(), y.end(), [](const Scalar & x) { return x.isZero(); })) return "";
+  std::string list;
+  for(const Scalar & x : y) list += (list.empty() ? "" : ", ") + Block::text(x);
+  std::string e = fmt::format("detail::rows_times<{}>({}, {}, {{{}}})", padded, M, first, list);
+  if(padded != rows) e += fmt::format(".template head<{}>()", rows);
   return e;
 }
 
@@ -248,7 +247,9 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
   const bool stashOn = rm.nv >= kStashDofs;
   // the subtree entries of a column as one vector expression over the rows of a matrix
   // UB = [u_k^T b_k^T] (nv x 12, row k per dof): without external wrenches (they add a term per row)
-  const bool blocks = onBlock && fextSums.empty();
+  bool blocks = false;
+  for(std::size_t j = 0; j < n && onBlock && fextSums.empty(); ++j)
+    blocks = blocks || (rm.joints[j].joint.forward() && subtreeDofs(rm, j).second >= kBlockRobotRows);
   // (kBlockPad more rows, zero: a block of rows is computed over a multiple of kBlockPad rows, the
   // size Eigen vectorises with its widest packets, and its first rows kept)
   if(blocks)
@@ -277,20 +278,11 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
     return out;
   };
   // rows [first, first + rows) of column col: M (pair_ub or pair_sm) times yq and ya, computed over
-  // a multiple of kBlockPad rows, its first `rows` kept
+  // a multiple of kBlockPad rows (detail::rows_times), its first `rows` kept
   auto emitBlock = [&](const std::string & M, const std::vector<Scalar> & yq, const std::vector<Scalar> & ya, int first,
-                       int rows, int col, const std::string & hint) {
+                       int rows, int col) {
     const int padded = (rows + kBlockPad - 1) / kBlockPad * kBlockPad;
-    std::array<std::string, 2> e{blockColumn(M, yq, first, padded), blockColumn(M, ya, first, padded)};
-    if(padded != rows)
-      for(std::size_t k = 0; k < 2; ++k)
-      {
-        if(e[k].empty()) continue;
-        const std::string t = hint + (k == 0 ? "q" : "a");
-        b.line(fmt::format("const Eigen::Matrix<S, {}, 1> {} = {};", padded, t, e[k]));
-        e[k] = fmt::format("{}.template head<{}>()", t, rows);
-      }
-    onBlock(first, rows, col, e[0], e[1]);
+    onBlock(first, rows, col, blockColumn(M, yq, first, rows, padded), blockColumn(M, ya, first, rows, padded));
   };
   for(std::size_t i = 0; i < n; ++i)
     for(std::size_t d = 0; d < w[i].s.size(); ++d)
@@ -369,7 +361,7 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
       const auto [first, rows] = blocks && forward ? subtreeDofs(rm, j) : std::pair<int, int>{0, 0};
       if(rows >= kBlockRows)
         emitBlock("pair_ub", components({{&yaQ.w, &yaQ.v}, {&yvQ.w, &yvQ.v}}), components({{&yaA.w, &yaA.v}, {&sm.w, &sm.v}}),
-                  first, rows, col, h + "B");
+                  first, rows, col);
       for(std::size_t i = j; i < n && rows < kBlockRows; ++i)
       {
         bool inSub = false;
@@ -403,15 +395,14 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
         const auto ak = static_cast<std::size_t>(a);
         for(std::size_t e = 0; e < w[ak].s.size(); ++e) ancestors.emplace_back(rm.joints[ak].vIndex + static_cast<int>(e), &s[ak][e]);
       }
-      std::sort(ancestors.begin(), ancestors.end(), [](const auto & x, const auto & y) { return x.first < y.first; });
+      if(blocks) std::sort(ancestors.begin(), ancestors.end(), [](const auto & x, const auto & y) { return x.first < y.first; });
       for(std::size_t r0 = 0, r1 = 0; r0 < ancestors.size(); r0 = r1)
       {
         for(r1 = r0 + 1; r1 < ancestors.size() && ancestors[r1].first == ancestors[r1 - 1].first + 1;) ++r1;
         const int run = static_cast<int>(r1 - r0);
         if(blocks && run >= kBlockRows)
         {
-          emitBlock("pair_sm", components({{&dFq.n, &dFq.f}}), components({{&dFa.n, &dFa.f}}), ancestors[r0].first, run, col,
-                    fmt::format("{}A{}", h, ancestors[r0].first));
+          emitBlock("pair_sm", components({{&dFq.n, &dFq.f}}), components({{&dFa.n, &dFa.f}}), ancestors[r0].first, run, col);
           continue;
         }
         for(std::size_t r = r0; r < r1; ++r)

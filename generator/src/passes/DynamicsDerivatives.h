@@ -14,7 +14,7 @@
 //                 column's entries over a contiguous range of rows (j's subtree: RBDyn numbers dofs
 //                 depth first; a run of consecutive ancestor dofs, e.g. a floating base's six) are one
 //                 product UB[rows] [yaQ; yvQ], UB[rows] [yaA; s_m], SM[rows] dF_j, which Eigen vectorises
-//                 over the rows.
+//                 over the rows (on trees with a subtree of 8 dofs or more; an arm's entries stay scalar).
 
 #include <functional>
 #include <string>

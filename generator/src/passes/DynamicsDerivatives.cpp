@@ -245,8 +245,9 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
   std::vector<std::vector<Force>> u(n), bk(n);
   std::vector<std::vector<Motion>> s(n);
   const bool stashOn = rm.nv >= kStashDofs;
-  // the subtree entries of a column as one vector expression over the rows of a matrix
-  // UB = [u_k^T b_k^T] (nv x 12, row k per dof): without external wrenches (they add a term per row)
+  // blocks: a column's entries over contiguous rows as one product of rows of UB = [u_k^T b_k^T]
+  // (nv x 12, row k per dof) or of SM = [s_k^T] (nv x 6); on trees with a subtree of kBlockRobotRows
+  // dofs or more, without external wrenches (they add a term per row)
   bool blocks = false;
   for(std::size_t j = 0; j < n && onBlock && fextSums.empty(); ++j)
     blocks = blocks || (rm.joints[j].joint.forward() && subtreeDofs(rm, j).second >= kBlockRobotRows);

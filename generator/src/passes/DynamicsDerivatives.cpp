@@ -189,6 +189,14 @@ std::vector<PairJoint> stashJoints(Block & b, const std::vector<WorldBody> & w, 
 namespace
 {
 
+/// true when joint j is on joint i's support path (i in the subtree of j, i = j included).
+bool inSubtree(const RobotModel & rm, std::size_t i, std::size_t j)
+{
+  for(int a = static_cast<int>(i); a >= 0; a = rm.joints[static_cast<std::size_t>(a)].parent)
+    if(a == static_cast<int>(j)) return true;
+  return false;
+}
+
 /// The dofs of joint j's subtree as one index range [first, first + count) (RBDyn numbers dofs
 /// depth first, so a subtree's are contiguous); count = 0 when they are not.
 std::pair<int, int> subtreeDofs(const RobotModel & rm, std::size_t j)
@@ -196,10 +204,7 @@ std::pair<int, int> subtreeDofs(const RobotModel & rm, std::size_t j)
   int lo = rm.nv, hi = -1, count = 0;
   for(std::size_t i = j; i < rm.joints.size(); ++i)
   {
-    bool inSub = false;
-    for(int a = static_cast<int>(i); a >= 0 && !inSub; a = rm.joints[static_cast<std::size_t>(a)].parent)
-      inSub = a == static_cast<int>(j);
-    if(!inSub || rm.joints[i].nv == 0) continue;
+    if(!inSubtree(rm, i, j) || rm.joints[i].nv == 0) continue;
     lo = std::min(lo, rm.joints[i].vIndex);
     hi = std::max(hi, rm.joints[i].vIndex + rm.joints[i].nv);
     count += rm.joints[i].nv;
@@ -363,29 +368,29 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
       if(rows >= kBlockRows)
         emitBlock("pair_ub", components({{&yaQ.w, &yaQ.v}, {&yvQ.w, &yvQ.v}}), components({{&yaA.w, &yaA.v}, {&sm.w, &sm.v}}),
                   first, rows, col);
-      for(std::size_t i = j; i < n && rows < kBlockRows; ++i)
+      else
       {
-        bool inSub = false;
-        for(int a = static_cast<int>(i); a >= 0 && !inSub; a = rm.joints[static_cast<std::size_t>(a)].parent)
-          inSub = a == static_cast<int>(j);
-        if(!inSub) continue;
-        const bool carried = i != j || forward;
-        for(std::size_t e = 0; e < w[i].s.size(); ++e)
+        for(std::size_t i = j; i < n; ++i)
         {
-          const int row = rm.joints[i].vIndex + static_cast<int>(e);
-          const std::string hk = fmt::format("d{}_{}", row, col);
-          Scalar dq;
-          if(!carried) dq = dot(b, s[i][e], dFq, hk + "q");
-          else
+          if(!inSubtree(rm, i, j)) continue;
+          const bool carried = i != j || forward;
+          for(std::size_t e = 0; e < w[i].s.size(); ++e)
           {
-            std::vector<Term> t{Term{1.0, {dot(b, yaQ, u[i][e], hk + "qa")}}, Term{1.0, {dot(b, yvQ, bk[i][e], hk + "qv")}}};
-            if(!fextSums.empty()) // s_k . (s_m x* Fext_i)
-              t.push_back(Term{1.0, {dot(b, s[i][e], crossDual(b, sm, fextSums[i], hk + "sxF"), hk + "qf")}});
-            dq = b.sum(t, hk + "q");
+            const int row = rm.joints[i].vIndex + static_cast<int>(e);
+            const std::string hk = fmt::format("d{}_{}", row, col);
+            Scalar dq;
+            if(!carried) dq = dot(b, s[i][e], dFq, hk + "q");
+            else
+            {
+              std::vector<Term> t{Term{1.0, {dot(b, yaQ, u[i][e], hk + "qa")}}, Term{1.0, {dot(b, yvQ, bk[i][e], hk + "qv")}}};
+              if(!fextSums.empty()) // s_k . (s_m x* Fext_i)
+                t.push_back(Term{1.0, {dot(b, s[i][e], crossDual(b, sm, fextSums[i], hk + "sxF"), hk + "qf")}});
+              dq = b.sum(t, hk + "q");
+            }
+            const Scalar da = b.sum({Term{1.0, {dot(b, yaA, u[i][e], hk + "aa")}}, Term{1.0, {dot(b, sm, bk[i][e], hk + "av")}}},
+                                    hk + "a");
+            onEntry(row, col, dq, da);
           }
-          const Scalar da = b.sum({Term{1.0, {dot(b, yaA, u[i][e], hk + "aa")}}, Term{1.0, {dot(b, sm, bk[i][e], hk + "av")}}},
-                                  hk + "a");
-          onEntry(row, col, dq, da);
         }
       }
       // the strict ancestors of j: s_k . dF; with blocks, each run of consecutive dofs as one block

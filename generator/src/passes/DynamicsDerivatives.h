@@ -57,9 +57,10 @@ std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<WorldB
 /// (zero: none). fextSums: when not empty, per joint the sum over its subtree of the external
 /// wrenches (world, at the world origin) that the inverse dynamics subtracts, held constant: they
 /// add s_k . (s_m x* Fext_i) to the pairs whose s_k moves with joint m. onBlock (optional, not
-/// with fextSums): the entries of rows [first, first + rows) of column col, the subtree of the
-/// column's joint, as Eigen expressions (empty: zero) over `pair_ub` (nv x 12, row k = [u_k; b_k],
-/// declared and filled here) instead of one onEntry per entry.
+/// with fextSums): the entries of rows [first, first + rows) of column col (the subtree of the
+/// column's joint, or a run of consecutive ancestor dofs) as expressions (empty: zero) over
+/// `pair_ub` (row k = [u_k; b_k]) or `pair_sm` (row k = s_k), declared and filled here, instead of
+/// one onEntry per entry.
 void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
                      const Eigen::Vector3d & gravity, const std::vector<Force> & fextSums,
                      const std::function<void(int row, int col, const Scalar & dq, const Scalar & da)> & onEntry,

@@ -1,5 +1,5 @@
 // libFuzzer target: bytes as URDF text -> loader (rbd::parsers::fromUrdfString) -> generator model
-// (rbdgen::robotModelFromUrdf) -> emitted header (rbdgen::emit::emitHeader).
+// (rbdgen::robotModelFromUrdf) -> emitted header (rbdgen::emit::emitDynamicsHeader).
 //
 // Contract under test: the loader reports every problem of the file as rbd::parsers::UrdfError
 // (loader/include/rbd/parsers/urdf.h); anything else escaping it (std::out_of_range,
@@ -45,7 +45,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t * data, std::size_t siz
   try
   {
     const rbdgen::RobotModel rm = rbdgen::robotModelFromUrdf(robot);
-    const std::string header = rbdgen::emit::emitHeader(rm, "fuzz", "fuzz.urdf", "0", opt.fixed ? "fixed base" : "floating base");
+    const std::string provenance = rbdgen::emit::plainProvenance(rm, "fuzz.urdf", "0", opt.fixed ? "fixed base" : "floating base");
+    const std::string header = rbdgen::emit::emitDynamicsHeader(rm, rbdgen::emit::plainHeaderSpec(rm, "fuzz", provenance));
     if(header.find("namespace fuzz") == std::string::npos) __builtin_trap();
   }
   catch(const std::invalid_argument &)

@@ -119,7 +119,8 @@ std::vector<GeneratedFile> generateScene(const GenerateOptions & opt, std::vecto
   if(!options.empty()) p += fmt::format("// Options: {}.\n", options.substr(2));
   p += emit::robotSummaryLine(rm);
   if(inputs) *inputs = {fs::absolute(opt.scene).lexically_normal().string(), fs::absolute(scene.urdf).lexically_normal().string()};
-  std::vector<GeneratedFile> files{GeneratedFile{ns + "/dynamics.hpp", emit::emitSceneHeader(rm, scene, sr, ns, p, coupling)}};
+  std::vector<GeneratedFile> files{
+      GeneratedFile{ns + "/dynamics.hpp", emit::emitDynamicsHeader(rm, emit::sceneHeaderSpec(rm, scene, sr, ns, p, coupling))}};
   if(opt.batch)
   {
     emit::BatchFunctions bf;
@@ -177,7 +178,8 @@ std::vector<GeneratedFile> generateFiles(const GenerateOptions & opt, std::vecto
                                           opt.instantiate ? ", instantiated in dynamics_double.cpp and dynamics_float.cpp" : "");
   const std::string text = readFile(opt.urdf);
   const std::string source = fs::path(opt.urdf).filename().string(), hash = sha256Hex(text);
-  std::string header = emit::emitHeader(rm, ns, source, hash, options, opt.derivatives, coupling);
+  std::string header = emit::emitDynamicsHeader(
+      rm, emit::plainHeaderSpec(rm, ns, emit::plainProvenance(rm, source, hash, options), opt.derivatives, coupling));
   // The API's forward dynamics: the coupled system's when mimic joints are coupled.
   const bool fd = coupling.empty() ? rm.regularMassMatrix() : emit::coupledForwardDynamics(rm, coupling);
   const emit::InstantiatedFunctions instantiated{fd, opt.derivatives};

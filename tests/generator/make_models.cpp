@@ -22,7 +22,12 @@ int main(int argc, char ** argv)
       const rbdgentest::ProgrammaticModel m = rbdgentest::programmaticModel(k);
       const std::vector<sva::PTransformd> identity(static_cast<std::size_t>(m.mb.nrBodies()), sva::PTransformd::Identity());
       const rbdgen::RobotModel rm = rbdgen::buildRobotModel(m.mb, identity, m.name);
-      files.push_back({m.name + "/dynamics.hpp", rbdgen::emit::emitHeader(rm, m.name, "programmatic model " + m.name, "-", "in code, derivatives", true)});
+      files.push_back({m.name + "/dynamics.hpp", rbdgen::emit::emitDynamicsHeader(
+                                                   rm, rbdgen::emit::plainHeaderSpec(
+                                                           rm, m.name,
+                                                           rbdgen::emit::plainProvenance(rm, "programmatic model " + m.name, "-",
+                                                                                         "in code, derivatives"),
+                                                           true))});
     }
     rbdgen::writeFiles(argv[1], files);
   }

@@ -33,7 +33,7 @@ std::string header(const sc::Scene & scene)
 {
   const sc::SceneRobot sr = sc::loadSceneRobot(scene);
   const rbdgen::RobotModel rm = rbdgen::robotModelFromUrdf(sr.robot);
-  return rbdgen::emit::emitSceneHeader(rm, scene, sr, "ns", "// provenance");
+  return rbdgen::emit::emitDynamicsHeader(rm, rbdgen::emit::sceneHeaderSpec(rm, scene, sr, "ns", "// provenance"));
 }
 
 std::string lower(std::string s)

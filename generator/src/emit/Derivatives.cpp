@@ -255,14 +255,7 @@ EmittedBody fdDerivativesBody(const RobotModel & rm, const std::vector<double> &
 
 } // namespace
 
-EmittedBody inverseDynamicsDerivativesBody(const RobotModel & rm)
-{
-  Block b;
-  emitRigidBodyDerivatives(b, rm, Eigen::Vector3d(0, 0, -9.81), true, {}, nullptr);
-  return finish(b);
-}
-
-EmittedBody sceneInverseDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx)
+EmittedBody inverseDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx)
 {
   Block b;
   emitRigidBodyDerivatives(b, rm, fx.gravity, fx.velocityTerms, fx.wrenchBodies, &fx);
@@ -286,16 +279,11 @@ EmittedBody sceneInverseDynamicsDerivativesBody(const RobotModel & rm, const Sce
   return finish(b);
 }
 
-EmittedBody sceneForwardDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx, const std::string & biasCall,
-                                                 const std::string & wrenchArg)
+EmittedBody forwardDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx, const std::string & biasCall,
+                                            const std::string & wrenchArg)
 {
   return fdDerivativesBody(rm, fx.armature, biasCall,
                            "inverse_dynamics_derivatives<S>(q, alpha, d.alphaD" + wrenchArg + ")");
-}
-
-EmittedBody forwardDynamicsDerivativesBody(const RobotModel & rm)
-{
-  return fdDerivativesBody(rm, {}, "nonlinear_effects<S>(q, alpha)", "inverse_dynamics_derivatives<S>(q, alpha, d.alphaD)");
 }
 
 } // namespace rbdgen::emit

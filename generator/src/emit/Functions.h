@@ -100,12 +100,6 @@ struct Ltdl
 Ltdl emitLtdl(cg::Block & b, const RobotModel & rm, std::vector<std::vector<cg::Scalar>> H);
 /// x <- H^-1 x with the factors of emitLtdl.
 std::vector<cg::Scalar> emitLtdlSolve(cg::Block & b, const Ltdl & f, std::vector<cg::Scalar> x);
-/// Reads q, alpha, alphaD; fills `d.dtau_dq` and `d.dtau_dalpha` (zeroed before; tangent convention
-/// of rbd/IDDerivatives.h).
-EmittedBody inverseDynamicsDerivativesBody(const RobotModel & rm);
-/// Reads q, alpha, tau; fills `d.alphaD`, `d.dalphaD_dq`, `d.dalphaD_dalpha` and `d.Minv` (FdDerivatives<S>)
-/// calling nonlinear_effects() and inverse_dynamics_derivatives().
-EmittedBody forwardDynamicsDerivativesBody(const RobotModel & rm);
 /// Reads q, alpha, tau; fills `alphaD` (articulated-body algorithm).
 EmittedBody abaBody(const RobotModel & rm);
 

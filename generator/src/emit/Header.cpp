@@ -1,5 +1,7 @@
-// The header assemblers' common prelude, the plain header of a robot and the batch header.
+// The header assembler (plain and scene headers), its prelude, and the batch header.
 #include "Header.h"
+
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -8,6 +10,7 @@
 #include "Functions.h"
 #include "MimicCoupled.h"
 #include "RobotValues.h"
+#include "SceneHeader.h"
 #include "Template.h"
 
 #ifndef RBDGEN_VERSION
@@ -26,6 +29,13 @@ std::string robotSummaryLine(const RobotModel & rm)
 {
   return fmt::format("// Robot '{}': nq = {}, nv = {}, {} links, {} moving bodies, total mass {:.6g} kg.", rm.name, rm.nq, rm.nv,
                      rm.bodies.size(), rm.joints.size(), rm.totalMass);
+}
+
+std::string plainProvenance(const RobotModel & rm, const std::string & sourceName, const std::string & sourceHash,
+                            const std::string & options)
+{
+  return fmt::format("{}\n// Source: {} (sha256 {})\n// Options: {}\n{}", generatedByLine(), sourceName, sourceHash, options,
+                     robotSummaryLine(rm));
 }
 
 std::map<std::string, std::string> preludeValues(const RobotModel & rm, const std::string & ns, const std::string & provenance,
@@ -64,72 +74,100 @@ std::string noForwardDynamicsNote(const std::vector<std::string> & joints)
                      names);
 }
 
-std::string emitHeader(const RobotModel & rm, const std::string & ns, const std::string & sourceName,
-                       const std::string & sourceHash, const std::string & options, bool derivatives,
-                       const rbd::parsers::MimicCoupling & coupling)
+SceneEffects defaultEffects(const RobotModel & rm)
 {
-  const bool coupled = !coupling.empty();
-  // Forward dynamics: both algorithms are emitted; forward_dynamics() calls the one with fewer
-  // floating-point operations (CRBA's count includes the nonlinear_effects() it calls).
-  // Operation counts of whole algorithms (each body emitting every pass it runs), for the choice.
-  const EmittedBody crbaAlone = forwardDynamicsBody(rm);
-  const EmittedBody abaAlone = abaBody(rm);
-  const EmittedBody nleAlone = rneaBody(rm, {true, false, true});
-  // From here on, the passes that run over all joints are emitted once (detail::) and called.
-  passes::SharedPasses shared(rm);
-  const passes::SharedPasses::Scope sharing(shared);
-  FdOptions crbaOptions;
-  crbaOptions.massMatrixLower = true;
-  const EmittedBody crba = forwardDynamicsBody(rm, crbaOptions);
-  const EmittedBody aba = abaBody(rm);
+  SceneEffects fx;
+  fx.gravity = Eigen::Vector3d(0, 0, -9.81);
+  fx.velocityTerms = true;
+  fx.damping = fx.friction = fx.armature = std::vector<double>(static_cast<std::size_t>(rm.nv), 0.0);
+  return fx;
+}
+
+HeaderSpec plainHeaderSpec(const RobotModel & rm, const std::string & ns, const std::string & provenance, bool derivatives,
+                           const rbd::parsers::MimicCoupling & coupling)
+{
+  HeaderSpec spec;
+  spec.ns = ns;
+  spec.provenance = provenance;
+  spec.effects = defaultEffects(rm);
+  spec.derivatives = derivatives;
+  spec.coupling = coupling;
+  return spec;
+}
+
+namespace
+{
+
+/// The robot API's forward dynamics: both algorithms are emitted; forward_dynamics() calls the one
+/// with fewer floating-point operations (CRBA's count includes the nonlinear_effects() it calls).
+struct FdChoice
+{
+  bool aba = true;
+  std::string doc; ///< the choice and the counts (provenance, forward_dynamics_algorithm)
+};
+
+/// Operation counts of whole algorithms (each body emitting every pass it runs): before the shared
+/// passes exist.
+FdChoice chooseForwardDynamics(const RobotModel & rm)
+{
   auto flops = [](const OpCount & c) { return c.mults + c.adds + 20 * c.calls; };
-  const long crbaCost = flops(crbaAlone.ops) + flops(nleAlone.ops), abaCost = flops(abaAlone.ops);
+  const long crbaCost = flops(forwardDynamicsBody(rm).ops) + flops(rneaBody(rm, {true, false, true}).ops);
+  const long abaCost = flops(abaBody(rm).ops);
   // Measured (bench/results): at equal counts ABA runs faster (CRBA's count leaves out filling and
   // reading H), e.g. ur5e 1964 vs 1777 operations but 2199 vs 2482 instructions. CRBA is chosen only
   // when it needs clearly fewer operations.
-  const bool useAba = 4 * crbaCost >= 3 * abaCost;
-  const std::string fdAlgorithm =
-      fmt::format("{} (emitted operations, sin/cos and divisions counted as 20: ABA {}, CRBA + LTDL {})",
-                  useAba ? "articulated-body algorithm" : "CRBA mass matrix + RNEA bias + tree-sparse LTDL factorisation",
-                  abaCost, crbaCost);
-  std::string provenance = generatedByLine() + "\n";
-  provenance += fmt::format("// Source: {} (sha256 {})\n", sourceName, sourceHash);
-  provenance += fmt::format("// Options: {}\n", options);
-  provenance += robotSummaryLine(rm) + "\n";
-  provenance += fmt::format("// Forward dynamics: {}.", fdAlgorithm);
-  const bool fd = rm.regularMassMatrix();
-  std::map<std::string, std::string> v = preludeValues(rm, ns, provenance, coupling, fd, derivatives);
-  v["fd_algorithm"] = fd ? fdAlgorithm : "none (singular mass matrix)";
+  FdChoice c;
+  c.aba = 4 * crbaCost >= 3 * abaCost;
+  c.doc = fmt::format("{} (emitted operations, sin/cos and divisions counted as 20: ABA {}, CRBA + LTDL {})",
+                      c.aba ? "articulated-body algorithm" : "CRBA mass matrix + RNEA bias + tree-sparse LTDL factorisation",
+                      abaCost, crbaCost);
+  return c;
+}
+
+std::string stackedFreeNote(const RobotModel & rm)
+{
+  std::string pairs;
+  for(const auto & [F, j] : rm.checks.stackedFree) pairs += fmt::format("{}'{}' and '{}'", pairs.empty() ? "" : ", ", F, j);
+  return fmt::format("// No forward dynamics: the free joint and the joint beyond it ({}) have only massless links between\n"
+                     "// them, so the mass matrix is singular at every configuration. Fix: keep one free joint.",
+                     pairs);
+}
+
+/// "gravity: 9.81 m/s^2 along world -z. " (nothing without gravity: a disabled effect is not named)
+std::string gravityDoc(const SceneEffects & fx)
+{
+  if(!fx.gravity) return "";
+  const Eigen::Vector3d & g = *fx.gravity;
+  if(g.x() == 0 && g.y() == 0 && g.z() < 0) return fmt::format("gravity: {} m/s^2 along world -z. ", -g.z());
+  return fmt::format("gravity: ({}, {}, {}) m/s^2, world coordinates. ", g.x(), g.y(), g.z());
+}
+
+/// The robot API of a plain header: inverse dynamics from the shared joint kernels (and with a
+/// wrench per link), velocity_torques from it, both forward-dynamics algorithms, the kinematic
+/// functions (poses, Jacobians, centre of mass, velocities, accelerations, momentum).
+void robotApiSections(HeaderSections & h, const RobotModel & rm, const FdChoice & choice, bool fd,
+                      passes::SharedPasses & shared)
+{
+  auto & v = h.values;
+  v["fd_algorithm"] = fd ? choice.doc : "none (singular mass matrix)";
   v["fn_forward_kinematics"] = forwardKinematicsBody(rm).text;
   v["fn_kinematics"] = kinematicsBody(rm).text;
   shared.kernels(); // (detail::inverse_dynamics_from takes them, even when no joint has a kernel entry)
   v["fn_inverse_dynamics_from"] = inverseDynamicsFromKernelsBody(rm).text;
   v["fn_inverse_dynamics_fext"] = inverseDynamicsWrenchesBody(rm).text;
-  // nonlinear_effects: its own RNEA, alphaD folded away at generation time (as the shared RNEA at
-  // alphaD = 0 it ran 5 % slower: zeros multiplied by joint rotations do not fold in IEEE
-  // arithmetic); velocity_torques: the shared RNEA at alphaD = 0 and g = 0 (one RNEA fewer in the
-  // header for the same 5 %)
-  v["gravity"] = gravityLiteral();
-  v["fn_nonlinear_effects"] = rneaBody(rm, {true, false, true}).text;
+  v["gravity_magnitude"] = gravityLiteral();
+  // velocity_torques: the shared RNEA at alphaD = 0 and g = 0 (one RNEA fewer in the header; as
+  // nonlinear_effects it runs 5 % slower than its own RNEA: zeros multiplied by joint rotations do
+  // not fold in IEEE arithmetic, so nonlinear_effects keeps its own)
   v["fn_velocity_torques"] =
       "  detail::inverse_dynamics_from<S>(detail::joint_kernels<S>(q), alpha, Tangent<S>::Zero(), S(0), tau);\n";
-  v["fn_gravity_torques"] = rneaBody(rm, {false, false, true}).text;
-  massMatrixValues(v, rm, {});
   if(fd)
   {
-    v["fn_forward_dynamics_crba"] = crba.text;
-    v["fn_forward_dynamics_aba"] = aba.text;
-    v["forward_dynamics_choice"] = useAba ? "forward_dynamics_aba" : "forward_dynamics_crba";
-  }
-  else if(!rm.masslessSubtrees.empty()) v["no_forward_dynamics_note"] = noForwardDynamicsNote(rm.masslessSubtrees);
-  else
-  {
-    std::string pairs;
-    for(const auto & [F, j] : rm.checks.stackedFree) pairs += fmt::format("{}'{}' and '{}'", pairs.empty() ? "" : ", ", F, j);
-    v["no_forward_dynamics_note"] = fmt::format(
-        "// No forward dynamics: the free joint and the joint beyond it ({}) have only massless links between\n"
-        "// them, so the mass matrix is singular at every configuration. Fix: keep one free joint.",
-        pairs);
+    FdOptions crbaOptions;
+    crbaOptions.massMatrixLower = true;
+    v["fn_forward_dynamics_crba"] = forwardDynamicsBody(rm, crbaOptions).text;
+    v["fn_forward_dynamics_aba"] = abaBody(rm).text;
+    v["forward_dynamics_choice"] = choice.aba ? "forward_dynamics_aba" : "forward_dynamics_crba";
   }
   v["fn_jacobian"] = jacobianBody(rm).text;
   v["support_jacobian"] = supportJacobianDefinitions(rm);
@@ -140,21 +178,79 @@ std::string emitHeader(const RobotModel & rm, const std::string & ns, const std:
   v["fn_body_accelerations"] = bodyAccelerationsBody(rm).text;
   v["fn_com_jacobian"] = comJacobianBody(rm).text;
   v["fn_centroidal_momentum_matrix"] = centroidalMomentumMatrixBody(rm).text;
-  if(derivatives) v["fn_inverse_dynamics_derivatives"] = inverseDynamicsDerivativesBody(rm).text;
-  if(derivatives && fd) v["fn_forward_dynamics_derivatives"] = forwardDynamicsDerivativesBody(rm).text;
-  v["shared_passes"] = shared.definitions();
-  const std::string text = selectSections(templateText("dynamics.hpp.in"),
-                                          {{"forward_dynamics", fd},
-                                           {"no_forward_dynamics", !fd},
-                                           {"derivatives", derivatives},
-                                           {"independent_alias", !coupled}},
-                                          "templates/dynamics.hpp.in");
-  std::string header = fillTemplate(text, v, "templates/dynamics.hpp.in");
-  if(coupled)
+}
+
+} // namespace
+
+std::string emitDynamicsHeader(const RobotModel & rm, const HeaderSpec & spec)
+{
+  const bool robotApi = spec.scene == nullptr, coupled = !spec.coupling.empty();
+  const SceneEffects & fx = spec.effects;
+  const bool gravity = fx.gravity.has_value(), velocity = fx.velocityTerms, wrenches = !fx.wrenchBodies.empty();
+  const bool genBias = gravity || velocity || wrenches || !fx.contacts.empty() || fx.hasDamping() || fx.hasFriction();
+  const std::vector<std::string> singular = unregularisedMasslessJoints(rm, fx);
+  const bool fd = singular.empty() && rm.checks.stackedFree.empty();
+  const FdChoice choice = robotApi ? chooseForwardDynamics(rm) : FdChoice{};
+  HeaderSections h;
+  h.values = preludeValues(rm, spec.ns, robotApi ? spec.provenance + "\n// Forward dynamics: " + choice.doc + "." : spec.provenance,
+                           spec.coupling, fd, spec.derivatives);
+  h.flags = {{"robot_api", robotApi},       {"scene", !robotApi},
+             {"gravity", gravity},          {"velocity", velocity},
+             {"bias", gravity || velocity}, {"generalized_bias", !robotApi && genBias},
+             {"forward_dynamics", fd},      {"no_forward_dynamics", !fd},
+             {"derivatives", spec.derivatives}, {"own_model", true},
+             {"coupled", false},            {"independent_alias", !coupled}};
+  for(const char * f : {"wrenches", "contacts", "quaternion", "free", "planar", "rk4", "semi_implicit_euler", "explicit_euler"})
+    h.flags[f] = false; // (the scene's sections: sceneSections)
+  auto & v = h.values;
+  // From here on, the passes that run over all joints are emitted once (detail::) and called.
+  passes::SharedPasses shared(rm);
+  std::optional<passes::SharedPasses::Scope> sharing(std::in_place, shared);
+  const std::string M = fx.hasArmature() ? "(H + diag(armature))" : "H";
+  const std::string wrenchArg = wrenches ? ", wrenches" : "";
+  // equations of motion M alphaD = tau - bias(q, alpha [, wrenches])
+  const std::string biasName = robotApi ? "nonlinear_effects" : (genBias ? "generalized_bias" : "");
+  const std::string biasArgs = "(q, alpha" + wrenchArg + ")";
+  const std::string bias = biasName.empty() ? "" : biasName + "<S>" + biasArgs;
+  v["layout_doc"] = robotApi ? "" : "; locked joints are gone";
+  v["gravity_doc"] = gravityDoc(fx);
+  v["nbodies_doc"] = robotApi ? "fixed ones included" : "fixed and locked ones included";
+  v["no_step_doc"] = robotApi ? "" : " and no step";
+  v["step_derivatives_doc"] = robotApi ? "" : "and step_derivatives ";
+  v["equation_doc"] = M + " alphaD = tau" + (biasName.empty() ? "" : " - " + biasName + biasArgs);
+  v["armature_doc"] = fx.hasArmature() ? " + diag(armature)" : "";
+  v["wrench_param"] = wrenches ? ", [[maybe_unused]] const Wrenches<S> & wrenches" : "";
+  v["wrench_doc_arg"] = wrenchArg;
+  v["wrenches_constant_doc"] = wrenches ? "; wrenches are held constant" : "";
+  v["joint_terms_doc"] = fx.hasDamping() || fx.hasFriction() ? " plus the joint-space terms" : "";
+  const Eigen::Vector3d g = gravity ? *fx.gravity : Eigen::Vector3d::Zero();
+  if(gravity)
   {
-    header += mimicCoupledSection(coupling, ns, coupledForwardDynamics(rm, coupling), derivatives);
+    v["gravity"] = fmt::format("{}, {}, {}", g[0], g[1], g[2]);
+    v["fn_gravity_torques"] = rneaBody(rm, {false, false, true, g}).text;
   }
-  return header;
+  if(gravity || velocity)
+  {
+    v["fn_nonlinear_effects"] = rneaBody(rm, {velocity, false, gravity, g}).text;
+    v["bias_doc"] = gravity && velocity ? "gravity, Coriolis and centrifugal torques" : (gravity ? "gravity torques" : "Coriolis and centrifugal torques");
+  }
+  if(velocity && !robotApi) v["fn_velocity_torques"] = rneaBody(rm, {true, false, false, g}).text; // (robot API: robotApiSections)
+  massMatrixValues(v, rm, fx.armature);
+  if(robotApi) robotApiSections(h, rm, choice, fd, shared);
+  else sceneSections(h, rm, *spec.scene, *spec.sceneRobot, fx, fd);
+  if(!fd) v["no_forward_dynamics_note"] = singular.empty() ? stackedFreeNote(rm) : noForwardDynamicsNote(singular);
+  if(spec.derivatives)
+  {
+    v["fn_inverse_dynamics_derivatives"] = inverseDynamicsDerivativesBody(rm, fx).text;
+    if(fd) v["fn_forward_dynamics_derivatives"] = forwardDynamicsDerivativesBody(rm, fx, bias, wrenchArg).text;
+  }
+  v["shared_passes"] = shared.definitions();
+  sharing.reset(); // (a coupled API calls independent::)
+  std::string header = renderTemplate("dynamics.hpp.in", h.flags, h.values);
+  if(!coupled) return header;
+  if(robotApi)
+    return header + mimicCoupledSection(spec.coupling, spec.ns, coupledForwardDynamics(rm, spec.coupling), spec.derivatives);
+  return header + coupledSceneSections(h, rm, *spec.scene, *spec.sceneRobot, fx, spec.coupling, spec.ns);
 }
 
 void massMatrixValues(std::map<std::string, std::string> & v, const RobotModel & rm, const std::vector<double> & armature)

@@ -1,8 +1,8 @@
 #pragma once
-// The header assemblers: what every dynamics header opens with (provenance lines, the prelude's
-// values), the plain header of a robot (templates/dynamics.hpp.in) and the batch header over a
-// robot's or a scene's header (templates/batch.hpp.in). A scene's header: SceneHeader.h, on the
-// same prelude.
+// The header assembler: one for the plain header of a robot and the header of a scene (a plain
+// header is the default scene with the robot API), both from templates/dynamics.hpp.in; what every
+// dynamics header opens with (provenance lines, the prelude's values); the batch header over either
+// (templates/batch.hpp.in). The scene's own sections: SceneHeader.h.
 
 #include <map>
 #include <string>
@@ -10,7 +10,10 @@
 
 #include <rbd/parsers/MimicCoupling.h>
 
+#include <rbd/scene/SceneLoader.h>
+
 #include "../model/RobotModel.h"
+#include "SceneEffects.h"
 
 namespace rbdgen::emit
 {
@@ -20,6 +23,11 @@ std::string generatedByLine();
 
 /// "// Robot '<name>': nq = .., nv = .., <n> links, <m> moving bodies, total mass <kg> kg."
 std::string robotSummaryLine(const RobotModel & rm);
+
+/// The lines that open a plain header: generated-by, source (file name and sha256), options and the
+/// robot summary (the assembler adds the forward-dynamics choice).
+std::string plainProvenance(const RobotModel & rm, const std::string & sourceName, const std::string & sourceHash,
+                            const std::string & options);
 
 /// The template values of the prelude every dynamics header shares: provenance (the given lines,
 /// plus the mimic coupling's), namespace (ns, or ns::independent when mimic joints are coupled),
@@ -32,13 +40,41 @@ std::map<std::string, std::string> preludeValues(const RobotModel & rm, const st
 /// The comment that replaces forward dynamics when joints move only massless links (H singular).
 std::string noForwardDynamicsNote(const std::vector<std::string> & joints);
 
-/// The plain header of a model (ns: namespace; sourceName, sourceHash and options for provenance).
-/// derivatives: also emit inverse_dynamics_derivatives() and forward_dynamics_derivatives().
-/// A non-empty coupling (mimic joints) emits the full model in ns::independent and the coupled API in
-/// ns (MimicCoupled.h); otherwise ns::independent is an alias of ns.
-std::string emitHeader(const RobotModel & rm, const std::string & ns, const std::string & sourceName,
-                       const std::string & sourceHash, const std::string & options, bool derivatives = false,
-                       const rbd::parsers::MimicCoupling & coupling = {});
+/// What a dynamics header is made of (templates/dynamics.hpp.in). A plain header is the header of
+/// the default scene (defaultEffects: gravity along -z, velocity terms, nothing else) with the robot
+/// API (every kinematic function, both forward-dynamics algorithms, external wrenches per link); a
+/// scene's header has the scene's effects, its state, step() and selected outputs instead.
+struct HeaderSpec
+{
+  std::string ns;                                         ///< the namespace
+  std::string provenance;                                 ///< the comment lines that open the header
+  SceneEffects effects;                                   ///< the effects the code contains
+  const rbd::scene::Scene * scene = nullptr;              ///< nullptr: a plain header (the robot API)
+  const rbd::scene::SceneRobot * sceneRobot = nullptr;    ///< the scene's robot (with scene)
+  bool derivatives = false;                               ///< inverse/forward dynamics derivatives
+  rbd::parsers::MimicCoupling coupling;                   ///< non-empty: mimic joints coupled
+};
+
+/// The effects of a plain header: gravity 9.81 m/s^2 along world -z and the velocity terms.
+SceneEffects defaultEffects(const RobotModel & rm);
+
+/// The spec of a plain header: default effects, the robot API.
+HeaderSpec plainHeaderSpec(const RobotModel & rm, const std::string & ns, const std::string & provenance, bool derivatives = false,
+                           const rbd::parsers::MimicCoupling & coupling = {});
+
+/// The flags and values of templates/dynamics.hpp.in (renderTemplate) a header is assembled from.
+struct HeaderSections
+{
+  std::map<std::string, bool> flags;
+  std::map<std::string, std::string> values;
+};
+
+/// The header: the sections every header has (prelude, inverse dynamics, bias terms, mass matrix,
+/// forward dynamics, derivatives) for spec.effects, then the robot API or the scene's sections. A
+/// non-empty coupling emits the full model in ns::independent and the coupled API in ns (plain:
+/// MimicCoupled.h; scene: the same template in the coupled coordinates); otherwise ns::independent
+/// is an alias of ns.
+std::string emitDynamicsHeader(const RobotModel & rm, const HeaderSpec & spec);
 
 /// The values `mass_matrix_lower` (detail::mass_matrix_lower, its slot table), `mass_matrix_packed`
 /// (the public packed H and its entries) and `fn_mass_matrix` (mass_matrix's body: H from

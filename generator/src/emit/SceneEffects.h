@@ -56,13 +56,15 @@ void emitPointMotion(cg::Block & b, const cg::Xform & X0, const cg::Motion & v, 
 /// - contact and wrench torques.
 EmittedBody sceneRneaBody(const RobotModel & rm, const SceneEffects & fx, bool withAlphaD);
 
-/// Reads q, alpha, alphaD [, wrenches]; fills d.dtau_dq, d.dtau_dalpha (zeroed before) of the scene's
-/// inverse dynamics (wrenches held constant; contact forces differentiated where a point is pushed).
-EmittedBody sceneInverseDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx);
-/// Reads q, alpha, tau [, wrenches]; fills d (FdDerivatives<S>) of the scene's forward dynamics;
-/// biasCall: the generalized_bias call (empty: none), wrenchArg ", wrenches" or "".
-EmittedBody sceneForwardDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx, const std::string & biasCall,
-                                                 const std::string & wrenchArg);
+/// Reads q, alpha, alphaD [, wrenches]; fills d.dtau_dq, d.dtau_dalpha (zeroed before) of the
+/// inverse dynamics with effects fx (tangent convention of rbd/IDDerivatives.h; wrenches held
+/// constant; contact forces differentiated where a point is pushed).
+EmittedBody inverseDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx);
+/// Reads q, alpha, tau [, wrenches]; fills d (FdDerivatives<S>: alphaD, dalphaD_dq, dalphaD_dalpha,
+/// Minv) of the forward dynamics with effects fx, calling inverse_dynamics_derivatives(); biasCall:
+/// the bias call (nonlinear_effects or generalized_bias; empty: none), wrenchArg ", wrenches" or "".
+EmittedBody forwardDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx, const std::string & biasCall,
+                                            const std::string & wrenchArg);
 
 /// Reads q, alpha; fills `res[c]` (world force at contact c, 3-vector).
 EmittedBody contactForcesBody(const RobotModel & rm, const SceneEffects & fx);

@@ -1,11 +1,11 @@
-// Assembly of a scene header: which sections of templates/scene_dynamics.hpp.in exist (a disabled
-// effect's section is removed whole), the emitted bodies, per-joint integration lines, outputs.
+// The scene's sections of a header (templates/dynamics.hpp.in, assembled by emitDynamicsHeader):
+// which exist (a disabled effect's section is removed whole), the emitted bodies, per-joint
+// integration lines, outputs; and the scene's API in coupled coordinates (mimic joints).
 #include "SceneHeader.h"
 #include "RobotValues.h"
 
 #include <algorithm>
 #include <map>
-#include <memory>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -27,12 +27,6 @@ namespace rbdgen::emit
 using namespace rbdgen::passes;
 namespace
 {
-
-std::string fill(const std::string & name, const std::map<std::string, bool> & flags,
-                 const std::map<std::string, std::string> & values)
-{
-  return fillTemplate(selectSections(templateText(name), flags, "templates/" + name), values, "templates/" + name);
-}
 
 std::string literal(double v)
 {
@@ -166,7 +160,7 @@ std::string outputs(const RobotModel & rm, const rbd::scene::Scene & scene, cons
   {
     const int b = bodyIndex(rm, link);
     const std::string & ident = rm.bodies[static_cast<std::size_t>(b)].ident;
-    poses += fill("scene_output_pose.hpp.in", {},
+    poses += renderTemplate("scene_output_pose.hpp.in", {},
                   {{"link", link}, {"ident", ident},
                    {"body", coupled ? fmt::format("  res = independent::pose_{}<S>({});", ident, kExpandedQ)
                                     : linkPoseBody(rm, b).text}});
@@ -175,7 +169,7 @@ std::string outputs(const RobotModel & rm, const rbd::scene::Scene & scene, cons
   {
     const int b = bodyIndex(rm, link);
     const std::string & ident = rm.bodies[static_cast<std::size_t>(b)].ident;
-    jacobians += fill("scene_output_jacobian.hpp.in", {},
+    jacobians += renderTemplate("scene_output_jacobian.hpp.in", {},
                       {{"link", link}, {"ident", ident},
                        {"body", coupled ? fmt::format("  J = project_columns<S, 6>(independent::jacobian_{}<S>({}));", ident, kExpandedQ)
                                         : linkJacobianBody(rm, b).text}});
@@ -211,7 +205,7 @@ std::string outputs(const RobotModel & rm, const rbd::scene::Scene & scene, cons
   if(potential)
     v["fn_potential_energy"] =
         coupled ? fmt::format("  e = independent::potential_energy<S>({});", kExpandedQ) : energyBody(rm, fx, false).text;
-  return fill("scene_outputs.hpp.in",
+  return renderTemplate("scene_outputs.hpp.in",
               {{"com", com},
                {"momentum", o.momentum},
                {"energy", o.energy},
@@ -230,6 +224,22 @@ const char * integratorDoc(rbd::scene::Integrator i)
     case rbd::scene::Integrator::RK4: return "classical Runge-Kutta 4";
   }
   return "";
+}
+
+/// integrate, the step's documentation and arguments, and with RK4 configuration_derivative and
+/// the quaternions' normalisation.
+void integrationValues(std::map<std::string, std::string> & v, const JointLines & J, rbd::scene::Integrator integrator,
+                       bool wrenches)
+{
+  v["integrate"] = J.integrate;
+  v["wrench_arg"] = wrenches ? ", wrenches" : "";
+  v["wrench_doc"] = wrenches ? " and the wrenches" : "";
+  v["integrator_doc"] = integratorDoc(integrator);
+  if(integrator == rbd::scene::Integrator::RK4)
+  {
+    v["configuration_derivative"] = J.derivative;
+    v["normalize_quaternions"] = J.normalize;
+  }
 }
 
 } // namespace
@@ -306,48 +316,37 @@ bool coupledSceneForwardDynamics(const RobotModel & rm, const SceneEffects & fx,
   return true;
 }
 
-std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & scene, const rbd::scene::SceneRobot & sr,
-                            const std::string & ns, const std::string & provenance,
-                            const rbd::parsers::MimicCoupling & coupling)
+HeaderSpec sceneHeaderSpec(const RobotModel & rm, const rbd::scene::Scene & scene, const rbd::scene::SceneRobot & sr,
+                           const std::string & ns, const std::string & provenance, const rbd::parsers::MimicCoupling & coupling)
 {
-  const bool coupled = !coupling.empty();
-  const SceneEffects fx = sceneEffects(rm, scene, sr);
-  const bool gravity = fx.gravity.has_value(), velocity = fx.velocityTerms;
+  HeaderSpec spec;
+  spec.ns = ns;
+  spec.provenance = provenance;
+  spec.effects = sceneEffects(rm, scene, sr);
+  spec.scene = &scene;
+  spec.sceneRobot = &sr;
+  spec.derivatives = scene.outputs.derivatives;
+  spec.coupling = coupling;
+  return spec;
+}
+
+void sceneSections(HeaderSections & h, const RobotModel & rm, const rbd::scene::Scene & scene,
+                   const rbd::scene::SceneRobot & sr, const SceneEffects & fx, bool fd)
+{
   const bool wrenches = !fx.wrenchBodies.empty(), contacts = !fx.contacts.empty();
-  const bool genBias = gravity || velocity || wrenches || contacts || fx.hasDamping() || fx.hasFriction();
-  const std::vector<std::string> singular = unregularisedMasslessJoints(rm, fx);
-  const bool fd = singular.empty();
+  const bool genBias = h.flags.at("generalized_bias");
   const JointLines J = jointLines(rm);
   const bool rk4 = scene.integrator == rbd::scene::Integrator::RK4;
-
-  std::map<std::string, bool> flags{
-      {"gravity", gravity},
-      {"velocity", velocity},
-      {"bias", gravity || velocity},
-      {"wrenches", wrenches},
-      {"contacts", contacts},
-      {"generalized_bias", genBias},
-      {"forward_dynamics", fd},
-      {"no_forward_dynamics", !fd},
-      {"quaternion", J.free || J.spherical},
-      {"free", J.free},
-      {"planar", J.planar},
-      {"rk4", rk4},
-      {"semi_implicit_euler", scene.integrator == rbd::scene::Integrator::SemiImplicitEuler},
-      {"explicit_euler", scene.integrator == rbd::scene::Integrator::ExplicitEuler},
-      {"derivatives", scene.outputs.derivatives},
-      {"own_model", true},
-      {"coupled", false},
-      {"independent_alias", !coupled},
-  };
-  std::map<std::string, std::string> v = preludeValues(rm, ns, provenance, coupling, fd, scene.outputs.derivatives);
-  v.erase("nframes"); // not shown by the scene header
+  h.flags["wrenches"] = wrenches;
+  h.flags["contacts"] = contacts;
+  h.flags["quaternion"] = J.free || J.spherical;
+  h.flags["free"] = J.free;
+  h.flags["planar"] = J.planar;
+  h.flags["rk4"] = rk4;
+  h.flags["semi_implicit_euler"] = scene.integrator == rbd::scene::Integrator::SemiImplicitEuler;
+  h.flags["explicit_euler"] = scene.integrator == rbd::scene::Integrator::ExplicitEuler;
+  auto & v = h.values;
   v["initial_state"] = initialStateLines(scene, sr, rm);
-  // From here on, the passes that run over all joints are emitted once (detail::) and called.
-  auto shared = std::make_unique<passes::SharedPasses>(rm);
-  auto sharing = std::make_unique<passes::SharedPasses::Scope>(*shared);
-  v["wrench_param"] = wrenches ? ", [[maybe_unused]] const Wrenches<S> & wrenches" : "";
-  if(gravity) v["gravity"] = fmt::format("{:.17g}, {:.17g}, {:.17g}", (*fx.gravity)[0], (*fx.gravity)[1], (*fx.gravity)[2]);
   if(wrenches)
   {
     std::string wb;
@@ -366,28 +365,12 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
                                      fx.contactDamping, fx.mu, fx.slipVelocity);
     v["fn_contact_forces"] = contactForcesBody(rm, fx).text;
   }
-  v["armature_doc"] = fx.hasArmature() ? " + diag(armature)" : "";
-  const std::string M = fx.hasArmature() ? "(H + diag(armature))" : "H";
-  v["equation_doc"] = genBias ? M + " alphaD = tau - generalized_bias(q, alpha" + std::string(wrenches ? ", wrenches" : "") + ")"
-                              : M + " alphaD = tau";
-  if(fd)
-    v["fd_doc"] = "composite rigid-body algorithm for " + M + (genBias ? ", generalized_bias" : "") +
-                ", tree-sparse L^T D L factorisation";
-  massMatrixValues(v, rm, fx.armature);
-  const Eigen::Vector3d g = gravity ? *fx.gravity : Eigen::Vector3d::Zero();
-  if(gravity) v["fn_gravity_torques"] = rneaBody(rm, {false, false, true, g}).text;
-  if(velocity) v["fn_velocity_torques"] = rneaBody(rm, {true, false, false, g}).text;
-  if(gravity || velocity)
-  {
-    v["fn_nonlinear_effects"] = rneaBody(rm, {velocity, false, gravity, g}).text;
-    v["bias_doc"] = gravity && velocity ? "gravity, Coriolis and centrifugal torques" : (gravity ? "gravity torques" : "Coriolis and centrifugal torques");
-  }
   v["fn_inverse_dynamics"] = sceneRneaBody(rm, fx, true).text;
   const std::string wrenchArg = wrenches ? ", wrenches" : "";
   if(genBias)
   {
     std::vector<std::string> terms;
-    if(gravity || velocity) terms.push_back("nonlinear_effects");
+    if(fx.gravity || fx.velocityTerms) terms.push_back("nonlinear_effects");
     if(fx.hasDamping()) terms.push_back("damping alpha");
     if(fx.hasFriction()) terms.push_back("friction alpha / sqrt(alpha^2 + v_s^2)");
     if(contacts) terms.push_back("- J_c^T contact_forces");
@@ -399,58 +382,42 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
   }
   if(fd)
   {
+    const std::string M = fx.hasArmature() ? "(H + diag(armature))" : "H";
+    v["fd_doc"] = "composite rigid-body algorithm for " + M + (genBias ? ", generalized_bias" : "") +
+                  ", tree-sparse L^T D L factorisation";
     FdOptions fo;
     fo.biasCall = genBias ? "generalized_bias<S>(q, alpha" + wrenchArg + ")" : "";
     fo.armature = fx.armature;
-    fo.massMatrixLower = true; // (massMatrixValues above, same armature)
+    fo.massMatrixLower = true; // (massMatrixValues, same armature)
     v["fn_forward_dynamics"] = forwardDynamicsBody(rm, fo).text;
-    v["integrate"] = J.integrate;
-    v["wrench_arg"] = wrenchArg;
-    v["wrench_doc"] = wrenches ? " and the wrenches" : "";
-    v["integrator_doc"] = integratorDoc(scene.integrator);
-    if(rk4)
-    {
-      v["configuration_derivative"] = J.derivative;
-      v["normalize_quaternions"] = J.normalize;
-    }
-  }
-  else v["no_forward_dynamics_note"] = noForwardDynamicsNote(singular);
-  if(scene.outputs.derivatives)
-  {
-    v["wrench_doc_arg"] = wrenches ? ", wrenches" : "";
-    v["fn_inverse_dynamics_derivatives"] = sceneInverseDynamicsDerivativesBody(rm, fx).text;
-    if(fd)
-      v["fn_forward_dynamics_derivatives"] =
-          sceneForwardDynamicsDerivativesBody(rm, fx, genBias ? "generalized_bias<S>(q, alpha" + wrenchArg + ")" : "", wrenchArg)
-              .text;
-    if(fd) v["step_derivatives"] = sceneStepDerivatives(rm, scene.integrator, wrenches, J.normalize);
+    integrationValues(v, J, scene.integrator, wrenches);
+    if(h.flags.at("derivatives")) v["step_derivatives"] = sceneStepDerivatives(rm, scene.integrator, wrenches, J.normalize);
   }
   v["outputs"] = outputs(rm, scene, fx);
-  v["shared_passes"] = shared->definitions();
-  sharing.reset(); // the coupled API below calls independent::
-  std::string header = fill("scene_dynamics.hpp.in", flags, v);
-  if(!coupled) return header;
+}
 
+std::string coupledSceneSections(HeaderSections h, const RobotModel & rm, const rbd::scene::Scene & scene,
+                                 const rbd::scene::SceneRobot & sr, const SceneEffects & fx,
+                                 const rbd::parsers::MimicCoupling & coupling, const std::string & ns)
+{
   // The scene's API in the coupled coordinates: the same template, each function a call of the full
   // model's (independent::) on the expanded state, projected; forward dynamics by the dense L D L^T of
   // the coupled mass matrix; per-joint code (integrate, step derivatives) from the coupled view.
+  const bool wrenches = !fx.wrenchBodies.empty(), contacts = !fx.contacts.empty();
+  const bool gravity = fx.gravity.has_value(), velocity = fx.velocityTerms;
+  const bool genBias = h.flags.at("generalized_bias");
   const RobotModel view = coupledView(rm, coupling);
   const JointLines Jc = jointLines(view);
   const bool fdc = coupledSceneForwardDynamics(rm, fx, coupling);
-  flags["own_model"] = false;
-  flags["coupled"] = true;
-  flags["independent_alias"] = false;
-  v.erase("model_constants"); // those of NS::independent: the coupled API calls its functions
-  flags["forward_dynamics"] = fdc;
-  flags["no_forward_dynamics"] = !fdc;
-  flags["quaternion"] = Jc.free || Jc.spherical;
-  flags["free"] = Jc.free;
-  flags["planar"] = Jc.planar;
-  for(const char * k : {"body_enum", "body_names", "equation_doc", "detail_lanes", "detail_sincos", "detail_opaque",
-                        "no_forward_dynamics_note", "fn_forward_dynamics", "fn_forward_dynamics_derivatives",
-                        "step_derivatives", "integrate", "configuration_derivative", "normalize_quaternions", "fd_doc",
-                        "shared_passes", "detail_inline"})
-    v.erase(k);
+  h.flags["own_model"] = false;
+  h.flags["coupled"] = true;
+  h.flags["independent_alias"] = false;
+  h.flags["forward_dynamics"] = fdc;
+  h.flags["no_forward_dynamics"] = !fdc;
+  h.flags["quaternion"] = Jc.free || Jc.spherical;
+  h.flags["free"] = Jc.free;
+  h.flags["planar"] = Jc.planar;
+  auto & v = h.values;
   std::string list;
   for(const std::string & m : coupling.coupled) list += "\n//   " + m;
   v["provenance"] = fmt::format(
@@ -479,12 +446,8 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
   v["fn_inverse_dynamics"] = projected("tau", "inverse_dynamics", std::string(kExpandedQA) + ", expand_tangent<S>(alphaD)" + w);
   if(genBias) v["fn_generalized_bias"] = projected("tau", "generalized_bias", kExpandedQA + w);
   const std::string bias = genBias ? " - generalized_bias<S>(q, alpha" + w + ")" : "";
-  for(const char * k : {"wrench_arg", "wrench_doc", "integrator_doc"}) v.erase(k);
   if(fdc)
   {
-    v["wrench_arg"] = w;
-    v["wrench_doc"] = wrenches ? " and the wrenches" : "";
-    v["integrator_doc"] = integratorDoc(scene.integrator);
     v["fd_doc"] = std::string("mass matrix") + (fx.hasArmature() ? " (armature included)" : "") +
                   " and generalized bias of the full model projected, dense L D L^T factorisation";
     v["fn_forward_dynamics"] = fmt::format("  Eigen::Matrix<S, nv, nv> LD = mass_matrix<S>(q);\n"
@@ -492,17 +455,12 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
                                            "  alphaD = tau{};\n"
                                            "  detail::ldlt_solve<S, 1>(LD, alphaD);",
                                            bias);
-    v["integrate"] = Jc.integrate;
-    if(rk4)
-    {
-      v["configuration_derivative"] = Jc.derivative;
-      v["normalize_quaternions"] = Jc.normalize;
-    }
+    integrationValues(v, Jc, scene.integrator, wrenches);
   }
   else
     v["no_forward_dynamics_note"] = "// No forward dynamics: the coupled mass matrix is singular (joints moving only massless links\n"
                                     "// without armature; see independent::).";
-  if(scene.outputs.derivatives)
+  if(h.flags.at("derivatives"))
   {
     v["fn_inverse_dynamics_derivatives"] = fmt::format(
         "  const auto full = independent::inverse_dynamics_derivatives<S>({}, expand_tangent<S>(alphaD){});\n"
@@ -528,7 +486,7 @@ std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & sce
     }
   }
   v["outputs"] = outputs(rm, scene, fx, true);
-  return header + fill("scene_dynamics.hpp.in", flags, v);
+  return renderTemplate("dynamics.hpp.in", h.flags, h.values);
 }
 
 } // namespace rbdgen::emit

@@ -1,6 +1,6 @@
 #pragma once
-// The header of a scene: the plain API specialised to the scene's effects (SceneEffects.h), its
-// outputs and step(), from templates/scene_*.hpp.in.
+// A scene's part of a header: its effects (SceneEffects.h), the sections only a scene has (state,
+// step(), outputs: templates/scene_*.hpp.in) and its coupled API; the assembler is Header.h's.
 
 #include <string>
 #include <vector>
@@ -9,6 +9,7 @@
 #include <rbd/scene/SceneLoader.h>
 
 #include "../model/RobotModel.h"
+#include "Header.h"
 #include "SceneEffects.h"
 
 namespace rbdgen::emit
@@ -29,12 +30,23 @@ std::string describeEffects(const rbd::scene::Scene & scene, const SceneEffects 
 /// joints, and no joint group that moves only massless links without armature.
 bool coupledSceneForwardDynamics(const RobotModel & rm, const SceneEffects & fx, const rbd::parsers::MimicCoupling & c);
 
-/// The whole header text; provenance: the lines that open it (comments). A non-empty coupling
-/// (mimic joints) emits the full model in ns::independent and the scene's API in the coupled
-/// coordinates in ns (the same functions, projected: templates/mimic_projection.hpp.in); otherwise
-/// ns::independent is an alias of ns.
-std::string emitSceneHeader(const RobotModel & rm, const rbd::scene::Scene & scene,
-                            const rbd::scene::SceneRobot & sceneRobot, const std::string & ns,
-                            const std::string & provenance, const rbd::parsers::MimicCoupling & coupling = {});
+/// The spec of a scene's header (its effects, state, step and outputs; derivatives when the scene
+/// asks for them). scene and sceneRobot must outlive the spec.
+HeaderSpec sceneHeaderSpec(const RobotModel & rm, const rbd::scene::Scene & scene, const rbd::scene::SceneRobot & sceneRobot,
+                           const std::string & ns, const std::string & provenance,
+                           const rbd::parsers::MimicCoupling & coupling = {});
+
+/// The scene's sections of the header h (emitDynamicsHeader: h holds the common flags and values):
+/// state and initial state, wrenches, contacts, inverse dynamics, generalized_bias, forward
+/// dynamics (fd), integration, step (and its derivatives) and the outputs.
+void sceneSections(HeaderSections & h, const RobotModel & rm, const rbd::scene::Scene & scene,
+                   const rbd::scene::SceneRobot & sceneRobot, const SceneEffects & fx, bool fd);
+
+/// The scene's API in the coupled coordinates of a robot with mimic joints (appended after the full
+/// model's header, whose namespace is ns::independent): the same template and sections as h, each
+/// function a call of independent::'s, projected (templates/mimic_projection.hpp.in).
+std::string coupledSceneSections(HeaderSections h, const RobotModel & rm, const rbd::scene::Scene & scene,
+                                 const rbd::scene::SceneRobot & sceneRobot, const SceneEffects & fx,
+                                 const rbd::parsers::MimicCoupling & coupling, const std::string & ns);
 
 } // namespace rbdgen::emit

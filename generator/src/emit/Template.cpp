@@ -92,4 +92,19 @@ std::string selectSections(const std::string & text, const std::map<std::string,
   return out;
 }
 
+std::string renderTemplate(const std::string & name, const std::map<std::string, bool> & flags,
+                           std::map<std::string, std::string> values)
+{
+  const std::string & full = templateText(name);
+  const std::string where = "templates/" + name;
+  const std::string text = selectSections(full, flags, where);
+  for(auto it = values.begin(); it != values.end();)
+  {
+    const std::string placeholder = "{{" + it->first + "}}";
+    if(text.find(placeholder) == std::string::npos && full.find(placeholder) != std::string::npos) it = values.erase(it);
+    else ++it;
+  }
+  return fillTemplate(text, values, where);
+}
+
 } // namespace rbdgen

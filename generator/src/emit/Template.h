@@ -32,4 +32,10 @@ std::string fillTemplate(const std::string & text, const std::map<std::string, s
 std::string selectSections(const std::string & text, const std::map<std::string, bool> & flags,
                            const std::string & templateName);
 
+/// Template `name` (templates/name) with its sections selected by flags and its placeholders filled
+/// from values; the values of placeholders that only removed sections held are dropped (a value no
+/// line of the template names is still an error).
+std::string renderTemplate(const std::string & name, const std::map<std::string, bool> & flags,
+                           std::map<std::string, std::string> values);
+
 } // namespace rbdgen

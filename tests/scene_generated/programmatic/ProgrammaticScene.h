@@ -3,7 +3,7 @@
 // with every joint type of the runtime (Spherical root; Rev, Prism, Planar, Cylindrical, Free, Fixed,
 // a backward Spherical and a backward Rev), tilted gravity, velocity terms, damping and friction on
 // a few dofs, <derivatives/>, one scene per integrator. The build tool make_programmatic_scenes
-// emits its headers (rbdgen::emit::emitSceneHeader, as `rbdgen generate --scene` does) and
+// emits its headers (rbdgen::emit::emitDynamicsHeader, as `rbdgen generate --scene` does) and
 // test_scene_programmatic checks them against the runtime built from the same construction.
 
 #include <string>

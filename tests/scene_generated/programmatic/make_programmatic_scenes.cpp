@@ -23,8 +23,10 @@ int main(int argc, char ** argv)
     for(int k = 0; k < sgprog::kIntegrators; ++k)
     {
       const std::string ns = sgprog::headerName(k);
-      files.push_back({ns + "/dynamics.hpp", rbdgen::emit::emitSceneHeader(rm, sgprog::scene(sgprog::integrator(k)), sr, ns,
-                                                                          "// programmatic scene (tests/scene_generated/programmatic)")});
+      const rbd::scene::Scene scene = sgprog::scene(sgprog::integrator(k));
+      const std::string provenance = "// programmatic scene (tests/scene_generated/programmatic)";
+      files.push_back({ns + "/dynamics.hpp",
+                       rbdgen::emit::emitDynamicsHeader(rm, rbdgen::emit::sceneHeaderSpec(rm, scene, sr, ns, provenance))});
     }
     rbdgen::writeFiles(argv[1], files);
   }

@@ -7,7 +7,7 @@
 //    accelerations of this random tree (cond(H) up to 9e4; at h = 3e-5 the errors grow: round-off
 //    dominates); bound 1e-11 relative to max(1, |A|), as tests/scene/test_step_derivatives;
 //  - the generated step and step_derivatives (emitted by make_programmatic_scenes through
-//    emitSceneHeader, compiled with the generated-code checks) against the runtime in double at
+//    emitDynamicsHeader, compiled with the generated-code checks) against the runtime in double at
 //    dt = 1 ms and 50 ms (rotations up to ~0.2 rad per step): the stepped state within the forward
 //    dynamics bound of the generated-code tests, 1e-12 max(1, cond(H)/1e3) (two solvers, the
 //    accelerations enter times dt); A and B 1e-10 max(1, cond(H)/1e3), the bound of

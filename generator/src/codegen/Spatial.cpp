@@ -210,25 +210,42 @@ Motion cross(Block & b, const Motion & m1, const Motion & m2, const std::string 
   return {cross(b, m1.w, m2.w, hint + "_w"), cross2(b, m1.w, m2.v, m1.v, m2.w, hint + "_v")};
 }
 
+Scalar dot(Block & b, const Motion & m, const Force & f, const std::string & hint)
+{
+  std::vector<Term> t;
+  for(int i = 0; i < 3; ++i)
+  {
+    t.push_back(Term{1.0, {m.w[i], f.n[i]}});
+    t.push_back(Term{1.0, {m.v[i], f.f[i]}});
+  }
+  return b.sum(t, hint);
+}
+
 Force crossDual(Block & b, const Motion & m, const Force & f, const std::string & hint)
 {
   return {cross2(b, m.w, f.n, m.v, f.f, hint + "_n"), cross(b, m.w, f.f, hint + "_f")};
 }
 
-Force apply(Block & b, const Inertia & I, const Motion & m, const std::string & hint)
+Force applyRigidLayout(Block & b, const Mat3 & A, const Vec3 & h, const Scalar * mass, const Motion & x,
+                       const std::function<std::string(const char *, int)> & name)
 {
-  // [I w + h x v; m v - h x w]
   Force o;
   for(int i = 0; i < 3; ++i)
   {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
-    o.n[i] = b.sum({Term{1.0, {I.I(i, 0), m.w[0]}}, Term{1.0, {I.I(i, 1), m.w[1]}}, Term{1.0, {I.I(i, 2), m.w[2]}},
-                    Term{1.0, {I.h[j], m.v[k]}}, Term{-1.0, {I.h[k], m.v[j]}}},
-                   el(hint + "_n", i));
-    o.f[i] = b.sum({Term{1.0, {I.m, m.v[i]}}, Term{-1.0, {I.h[j], m.w[k]}}, Term{1.0, {I.h[k], m.w[j]}}},
-                   el(hint + "_f", i));
+    o.n[i] = b.sum({Term{1.0, {A(i, 0), x.w[0]}}, Term{1.0, {A(i, 1), x.w[1]}}, Term{1.0, {A(i, 2), x.w[2]}},
+                    Term{1.0, {h[j], x.v[k]}}, Term{-1.0, {h[k], x.v[j]}}},
+                   name("_n", i));
+    std::vector<Term> f{Term{-1.0, {h[j], x.w[k]}}, Term{1.0, {h[k], x.w[j]}}};
+    if(mass) f.insert(f.begin(), Term{1.0, {*mass, x.v[i]}});
+    o.f[i] = b.sum(f, name("_f", i));
   }
   return o;
+}
+
+Force apply(Block & b, const Inertia & I, const Motion & m, const std::string & hint)
+{
+  return applyRigidLayout(b, I.I, I.h, &I.m, m, [&](const char * part, int i) { return el(hint + part, i); });
 }
 
 Inertia transApply(Block & b, const Xform & X, const Inertia & I, const std::string & hint)

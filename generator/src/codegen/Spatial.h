@@ -4,6 +4,7 @@
 // Conventions are those of sva: X = (E, r) from A to B, motion [w; v], force [n; f].
 
 #include <array>
+#include <functional>
 #include <string>
 
 #include <Eigen/Core>
@@ -93,10 +94,16 @@ Force add(Block & b, const Force & x, const Force & y, const std::string & hint)
 Force sub(Block & b, const Force & x, const Force & y, const std::string & hint);
 /// m1 x m2 = [w1 x w2; w1 x v2 + v1 x w2]
 Motion cross(Block & b, const Motion & m1, const Motion & m2, const std::string & hint);
+/// m . f = w . n + v . f
+Scalar dot(Block & b, const Motion & m, const Force & f, const std::string & hint);
 /// m x* f = [w x n + v x f; w x f]
 Force crossDual(Block & b, const Motion & m, const Force & f, const std::string & hint);
 /// I m = [I w + h x v; m v - h x w]
 Force apply(Block & b, const Inertia & I, const Motion & m, const std::string & hint);
+/// The product of a matrix of the rigid-body-inertia layout with x: [A w + h x v; mass v - h x w]
+/// (mass nullptr: no mass term, as for dI/dt); entry i of n and f named name("_n", i), name("_f", i).
+Force applyRigidLayout(Block & b, const Mat3 & A, const Vec3 & h, const Scalar * mass, const Motion & x,
+                       const std::function<std::string(const char *, int)> & name);
 /// X^T I X (inertia in the predecessor frame of X)
 Inertia transApply(Block & b, const Xform & X, const Inertia & I, const std::string & hint);
 Inertia add(Block & b, const Inertia & x, const Inertia & y, const std::string & hint);

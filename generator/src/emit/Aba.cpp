@@ -45,10 +45,10 @@ EmittedBody abaBody(const RobotModel & rm)
     for(std::size_t d = 0; d < nd; ++d) U[k].push_back(applyABI(b, IA[k], K[k].S[d], fmt::format("{}_U{}", t, d)));
     std::vector<std::vector<Scalar>> D(nd, std::vector<Scalar>(nd));
     for(std::size_t r = 0; r < nd; ++r)
-      for(std::size_t s = 0; s <= r; ++s) D[r][s] = D[s][r] = dotMF(b, K[k].S[r], U[k][s], fmt::format("{}_Dm{}{}", t, r, s));
+      for(std::size_t s = 0; s <= r; ++s) D[r][s] = D[s][r] = dot(b, K[k].S[r], U[k][s], fmt::format("{}_Dm{}{}", t, r, s));
     for(std::size_t d = 0; d < nd; ++d)
       u[k].push_back(b.sum({Term{1.0, {Scalar::var(fmt::format("tau[{}]", mj.vIndex + static_cast<int>(d)))}},
-                            Term{-1.0, {dotMF(b, K[k].S[d], pA[k], fmt::format("{}_SpA{}", t, d))}}},
+                            Term{-1.0, {dot(b, K[k].S[d], pA[k], fmt::format("{}_SpA{}", t, d))}}},
                            fmt::format("{}_u{}", t, d)));
     factIndex[k] = static_cast<int>(Dfact.size());
     Dfact.emplace_back(b, D, t + "_D");
@@ -116,7 +116,7 @@ EmittedBody abaBody(const RobotModel & rm)
     const auto nd = static_cast<std::size_t>(mj.nv);
     std::vector<Scalar> rhs(nd);
     for(std::size_t d = 0; d < nd; ++d)
-      rhs[d] = b.sum({Term{1.0, {u[k][d]}}, Term{-1.0, {dotMF(b, a1, U[k][d], fmt::format("{}_Ua{}", t, d))}}},
+      rhs[d] = b.sum({Term{1.0, {u[k][d]}}, Term{-1.0, {dot(b, a1, U[k][d], fmt::format("{}_Ua{}", t, d))}}},
                      fmt::format("{}_r{}", t, d));
     const auto qdd = Dfact[static_cast<std::size_t>(factIndex[k])].solve(b, rhs, t + "_qdd");
     Motion sa = a1;

@@ -17,20 +17,41 @@ using namespace rbdgen::passes;
 namespace
 {
 
-// Columns of joint k at the world origin, world axes: w = R s_w, u = R s_v - w x o_k
-// (R = E_0_k^T, o_k its origin), every entry (zeros too) into the 6-vectors col0, col1, ...; the
-// column at a point p is [w; u + w x p].
-void writeOriginColumns(Block & b, const JointKernel & K, const Xform & X0)
+/// How a support-path column is stored in its 6-vector and moved to the point p (the template
+/// argument of the header's detail::put_column).
+enum class ColumnKind
 {
+  translation, ///< [0; u]: J = [0; u]
+  rotation,    ///< [w; o], a rotation about an axis through o: J = [w; w x (p - o)]
+  screw        ///< [w; u - w x o], the column at the world origin: J = [w; (u - w x o) + w x p]
+};
+
+bool isZero(const Vec3 & x)
+{
+  return x[0].isZero() && x[1].isZero() && x[2].isZero();
+}
+
+// Columns of joint k, world axes: w = R s_w, u = R s_v (R = E_0_k^T, o = o_k its origin), stored
+// by kind (every entry, zeros too) into the 6-vectors col0, col1, ...: a rotation keeps its axis
+// point o instead of its velocity at the world origin (-w x o, 9 operations a column: w x (p - o)
+// at the end costs what w x p did, and p - o is shared by the joint's columns).
+std::vector<ColumnKind> writeSupportColumns(Block & b, const JointKernel & K, const Xform & X0)
+{
+  std::vector<ColumnKind> kinds;
   for(std::size_t d = 0; d < K.S.size(); ++d)
   {
     const Motion & Sd = K.S[d];
     const std::string h = fmt::format("J_{}", d);
     const Vec3 w = tmul(b, X0.E, Sd.w, h + "_w");
-    const Vec3 u = sub(b, tmul(b, X0.E, Sd.v, h + "_Rv"), cross(b, w, X0.r, h + "_wxo"), h + "_u");
+    const ColumnKind kind = isZero(Sd.w) ? ColumnKind::translation : (isZero(Sd.v) ? ColumnKind::rotation : ColumnKind::screw);
+    Vec3 second = X0.r; // (rotation)
+    if(kind == ColumnKind::translation) second = tmul(b, X0.E, Sd.v, h + "_Rv");
+    if(kind == ColumnKind::screw) second = sub(b, tmul(b, X0.E, Sd.v, h + "_Rv"), cross(b, w, X0.r, h + "_wxo"), h + "_u");
     for(int r = 0; r < 3; ++r) b.line(fmt::format("col{}({}) = {};", d, r, Block::text(w[r])));
-    for(int r = 0; r < 3; ++r) b.line(fmt::format("col{}({}) = {};", d, r + 3, Block::text(u[r])));
+    for(int r = 0; r < 3; ++r) b.line(fmt::format("col{}({}) = {};", d, r + 3, Block::text(second[r])));
+    kinds.push_back(kind);
   }
+  return kinds;
 }
 
 } // namespace
@@ -66,26 +87,34 @@ EmittedBody jacobianBody(const RobotModel & rm)
 
 std::string supportJacobianDefinitions(const RobotModel & rm)
 {
-  std::string out = "/// J(:, c) = [w; v + w x p] from m = [w; v], a column at the world origin, and p (world); with\n"
-                    "/// !turns (w = 0, a translation): [w; v].\n"
-                    "template<class S, bool turns>\n"
+  std::string out = "/// J(:, c) from the column m of a support step and the point p (world): kind 0, a translation\n"
+                    "/// m = [0; u]: [0; u]; kind 1, a rotation about an axis through o, m = [w; o]: [w; w x (p - o)];\n"
+                    "/// kind 2, m = [w; v] the column at the world origin: [w; v + w x p].\n"
+                    "template<class S, int kind>\n"
                     "RBDGEN_INLINE void put_column(Eigen::Matrix<S, 6, nv> & J, int c, const Eigen::Matrix<S, 6, 1> & m,\n"
                     "                              [[maybe_unused]] const Eigen::Matrix<S, 3, 1> & p) noexcept\n"
                     "{\n"
                     "  J(0, c) = m(0);\n"
                     "  J(1, c) = m(1);\n"
                     "  J(2, c) = m(2);\n"
-                    "  if constexpr(turns)\n"
-                    "  {\n"
-                    "    J(3, c) = m(3) + (m(1) * p(2) - m(2) * p(1));\n"
-                    "    J(4, c) = m(4) + (m(2) * p(0) - m(0) * p(2));\n"
-                    "    J(5, c) = m(5) + (m(0) * p(1) - m(1) * p(0));\n"
-                    "  }\n"
-                    "  else\n"
+                    "  if constexpr(kind == 0)\n"
                     "  {\n"
                     "    J(3, c) = m(3);\n"
                     "    J(4, c) = m(4);\n"
                     "    J(5, c) = m(5);\n"
+                    "  }\n"
+                    "  else if constexpr(kind == 1)\n"
+                    "  {\n"
+                    "    const S dx = p(0) - m(3), dy = p(1) - m(4), dz = p(2) - m(5);\n"
+                    "    J(3, c) = m(1) * dz - m(2) * dy;\n"
+                    "    J(4, c) = m(2) * dx - m(0) * dz;\n"
+                    "    J(5, c) = m(0) * dy - m(1) * dx;\n"
+                    "  }\n"
+                    "  else\n"
+                    "  {\n"
+                    "    J(3, c) = m(3) + (m(1) * p(2) - m(2) * p(1));\n"
+                    "    J(4, c) = m(4) + (m(2) * p(0) - m(0) * p(2));\n"
+                    "    J(5, c) = m(5) + (m(0) * p(1) - m(1) * p(0));\n"
                     "  }\n"
                     "}\n\n"
                     "/// Columns [c0, c0 + n) of J set to zero (one function for every range: a block expression per\n"
@@ -97,20 +126,19 @@ std::string supportJacobianDefinitions(const RobotModel & rm)
                     "    for(int r = 0; r < 6; ++r) J(r, c) = S(0);\n"
                     "}\n\n"
                     "// One step of the walk from q along a support path per moving joint: walk_E, walk_o from the\n"
-                    "// world pose of the joint's parent body to its own; the joint's columns at the world origin in\n"
-                    "// col0, col1... (every entry).\n";
-  // which velocity coordinates have an angular part (only those change with the point); the
-  // columns are separate 6-vectors written whole by the steps, so that the compilers keep them in
-  // registers (a 6 x 6 block for a free joint, zero-initialised, stayed in memory)
-  std::vector<std::vector<bool>> turns(rm.joints.size());
+                    "// world pose of the joint's parent body to its own; the joint's columns in col0, col1... (every\n"
+                    "// entry; stored as put_column reads them).\n";
+  // how each velocity coordinate's column is stored; the columns are separate 6-vectors written
+  // whole by the steps, so that the compilers keep them in registers (a 6 x 6 block for a free
+  // joint, zero-initialised, stayed in memory)
+  std::vector<std::vector<ColumnKind>> kinds(rm.joints.size());
   auto colParams = [](const MovingJoint & mj) {
     std::string params;
     for(int d = 0; d < mj.nv; ++d) params += fmt::format(", Eigen::Matrix<S, 6, 1> & col{}", d);
     return params;
   };
   out += supportStepFunctions(rm, "support_step", colParams, [&](Block & b, int k, const JointKernel & K, const Xform & X0) {
-    writeOriginColumns(b, K, X0);
-    for(const Motion & Sd : K.S) turns[static_cast<std::size_t>(k)].push_back(!(Sd.w[0].isZero() && Sd.w[1].isZero() && Sd.w[2].isZero()));
+    kinds[static_cast<std::size_t>(k)] = writeSupportColumns(b, K, X0);
   });
   // one function per joint's own link (X_owner_link = identity): its walk keeping each joint's
   // columns, its pose, the columns at the point; a link fixed to it at an offset calls it with the
@@ -179,7 +207,7 @@ std::string supportJacobianDefinitions(const RobotModel & rm)
       const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
       for(int d = 0; d < mj.nv; ++d)
         b.line(fmt::format("detail::put_column<S, {}>(J, {}, col_{}_{}, p);",
-                           turns[static_cast<std::size_t>(k)][static_cast<std::size_t>(d)] ? "true" : "false", mj.vIndex + d, mj.tag, d));
+                           static_cast<int>(kinds[static_cast<std::size_t>(k)][static_cast<std::size_t>(d)]), mj.vIndex + d, mj.tag, d));
     }
     // the other columns: zero
     std::vector<bool> onPath(static_cast<std::size_t>(rm.nv), false);

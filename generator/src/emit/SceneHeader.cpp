@@ -155,25 +155,24 @@ const char * const kExpandedQA = "expand_configuration<S>(q), expand_tangent<S>(
 std::string outputs(const RobotModel & rm, const rbd::scene::Scene & scene, const SceneEffects & fx, bool coupled = false)
 {
   const rbd::scene::Outputs & o = scene.outputs;
-  std::string poses, jacobians;
-  for(const std::string & link : o.poses)
-  {
-    const int b = bodyIndex(rm, link);
-    const std::string & ident = rm.bodies[static_cast<std::size_t>(b)].ident;
-    poses += renderTemplate("scene_output_pose.hpp.in", {},
-                  {{"link", link}, {"ident", ident},
-                   {"body", coupled ? fmt::format("  res = independent::pose_{}<S>({});", ident, kExpandedQ)
-                                    : linkPoseBody(rm, b).text}});
-  }
-  for(const std::string & link : o.jacobians)
-  {
-    const int b = bodyIndex(rm, link);
-    const std::string & ident = rm.bodies[static_cast<std::size_t>(b)].ident;
-    jacobians += renderTemplate("scene_output_jacobian.hpp.in", {},
-                      {{"link", link}, {"ident", ident},
-                       {"body", coupled ? fmt::format("  J = project_columns<S, 6>(independent::jacobian_{}<S>({}));", ident, kExpandedQ)
-                                        : linkJacobianBody(rm, b).text}});
-  }
+  // one function per listed link: templates/scene_output_<kind>.hpp.in with its body (coupled: the
+  // full model's function of the same name on the expanded state: `open` call `close`)
+  auto perLink = [&](const std::vector<std::string> & links, const std::string & kind, const std::string & open,
+                     const std::string & close, EmittedBody (*body)(const RobotModel &, int)) {
+    std::string out;
+    for(const std::string & link : links)
+    {
+      const int b = bodyIndex(rm, link);
+      const std::string & ident = rm.bodies[static_cast<std::size_t>(b)].ident;
+      const std::string call = fmt::format("independent::{}_{}<S>({})", kind, ident, kExpandedQ);
+      out += renderTemplate("scene_output_" + kind + ".hpp.in", {},
+                            {{"link", link}, {"ident", ident},
+                             {"body", coupled ? open + call + close : body(rm, b).text}});
+    }
+    return out;
+  };
+  const std::string poses = perLink(o.poses, "pose", "  res = ", ";", linkPoseBody);
+  const std::string jacobians = perLink(o.jacobians, "jacobian", "  J = project_columns<S, 6>(", ");", linkJacobianBody);
   const bool potential = o.energy && fx.gravity.has_value();
   const bool com = o.com || o.kinematics; // a robot's kinematics include its centre of mass
   std::map<std::string, std::string> v{{"poses", poses}, {"jacobians", jacobians}};

@@ -25,6 +25,22 @@ void trimNewline(std::string & s)
   if(!s.empty() && s.back() == '\n') s.pop_back();
 }
 
+/// The Euler integrators' q+ rows [v, v + n) of A and B (indent: the lines' indentation). semi
+/// (q+ = q (+) dt alpha+): A_q = scale A_alpha+ + Dq, B_q = scale B_alpha+ (plusDq: how Dq is added
+/// to A's block); explicit: A(q, q) = Dq, A(q, alpha) = dt Dw (setDq, setDw: the two assignments).
+std::string qRows(int n, int v, bool semi, const char * indent, const char * scale, const char * plusDq, const char * setDq,
+                  const char * setDw)
+{
+  if(semi)
+    return fmt::format("{2}d.A.template middleRows<{0}>({1}) = {3} * d.A.template middleRows<{0}>(nv + {1});\n"
+                       "{2}d.A.template block<{0}, {0}>({1}, {1}){4};\n"
+                       "{2}d.B.template middleRows<{0}>({1}) = {3} * d.B.template middleRows<{0}>(nv + {1});\n",
+                       n, v, indent, scale, plusDq);
+  return fmt::format("{2}d.A.template block<{0}, {0}>({1}, {1}){3};\n"
+                     "{2}d.A.template block<{0}, {0}>({1}, nv + {1}){4};\n",
+                     n, v, indent, setDq, setDw);
+}
+
 /// Euler integrators, joints whose q (+) w is q + w (revolute, prismatic, cylindrical): Dq = Dw = 1
 /// on the n consecutive dofs from v, one block operation for the run. semi: rows = dt (alpha+ rows)
 /// + [1 0 0]; explicit: [1, dt 1, 0] (the rows are zero before).
@@ -33,16 +49,8 @@ std::string vectorRows(const std::vector<std::string> & names, int v, int n, boo
   std::string list;
   for(const auto & name : names) list += (list.empty() ? "" : ", ") + name;
   std::string s = fmt::format("  // {} (q (+) w = q + w: Dq = Dw = 1)\n", list);
-  if(semi)
-    s += fmt::format("  d.A.template middleRows<{0}>({1}) = dt * d.A.template middleRows<{0}>(nv + {1});\n"
-                     "  d.A.template block<{0}, {0}>({1}, {1}).diagonal().array() += S(1);\n"
-                     "  d.B.template middleRows<{0}>({1}) = dt * d.B.template middleRows<{0}>(nv + {1});\n",
-                     n, v);
-  else
-    s += fmt::format("  d.A.template block<{0}, {0}>({1}, {1}).diagonal().setConstant(S(1));\n"
-                     "  d.A.template block<{0}, {0}>({1}, nv + {1}).diagonal().setConstant(dt);\n",
-                     n, v);
-  return s;
+  return s + qRows(n, v, semi, "  ", "dt", ".diagonal().array() += S(1)", ".diagonal().setConstant(S(1))",
+                   ".diagonal().setConstant(dt)");
 }
 
 /// Euler integrators: the q+ rows of a spherical, free or planar joint. semi: Dq [1 0 0] + dt Dw
@@ -56,17 +64,8 @@ std::string groupRows(const MovingJoint & mj, bool semi)
                    "    Eigen::Matrix<S, {0}, {0}> Dq, Dw;\n"
                    "    detail::{1}_step_blocks<S>(w.data() + {2}, Dq, Dw);\n",
                    n, fn, v);
-  if(semi)
-    s += fmt::format("    const Eigen::Matrix<S, {0}, {0}> dtDw = dt * Dw;\n"
-                     "    d.A.template middleRows<{0}>({1}) = dtDw * d.A.template middleRows<{0}>(nv + {1});\n"
-                     "    d.A.template block<{0}, {0}>({1}, {1}) += Dq;\n"
-                     "    d.B.template middleRows<{0}>({1}) = dtDw * d.B.template middleRows<{0}>(nv + {1});\n",
-                     n, v);
-  else
-    s += fmt::format("    d.A.template block<{0}, {0}>({1}, {1}) = Dq;\n"
-                     "    d.A.template block<{0}, {0}>({1}, nv + {1}) = dt * Dw;\n",
-                     n, v);
-  return s + "  }\n";
+  if(semi) s += fmt::format("    const Eigen::Matrix<S, {0}, {0}> dtDw = dt * Dw;\n", n);
+  return s + qRows(n, v, semi, "    ", "dtDw", " += Dq", " = Dq", " = dt * Dw") + "  }\n";
 }
 
 /// Every joint's q+ rows, runs of consecutive vector joints merged.

@@ -80,17 +80,6 @@ ABI addABI(Block & b, const ABI & x, const ABI & y, const std::string & hint)
   return {addSym(b, x.M, y.M, hint + "_M"), add(b, x.H, y.H, hint + "_H"), addSym(b, x.I, y.I, hint + "_I")};
 }
 
-Scalar dotMF(Block & b, const Motion & m, const Force & f, const std::string & hint)
-{
-  std::vector<Term> t;
-  for(int i = 0; i < 3; ++i)
-  {
-    t.push_back(Term{1.0, {m.w[i], f.n[i]}});
-    t.push_back(Term{1.0, {m.v[i], f.f[i]}});
-  }
-  return b.sum(t, hint);
-}
-
 DenseLdlt::DenseLdlt(Block & b, std::vector<std::vector<Scalar>> A, const std::string & hint)
   {
     const std::size_t k = A.size();

@@ -24,8 +24,6 @@ Force applyABI(Block & b, const ABI & A, const Motion & m, const std::string & h
 /// X^T A X: M' = E^T M E, H' = E^T H E + r^ M', I' = E^T I E + r^ (E^T H E)^T - H' r^
 ABI transApplyABI(Block & b, const Xform & X, const ABI & A, const std::string & hint);
 ABI addABI(Block & b, const ABI & x, const ABI & y, const std::string & hint);
-/// m . f
-Scalar dotMF(Block & b, const Motion & m, const Force & f, const std::string & hint);
 
 /// Dense symmetric positive-definite k x k system: L D L^T factorisation on symbols, then solves.
 class DenseLdlt

@@ -13,31 +13,11 @@ namespace rbdgen::passes
 namespace
 {
 
-/// m . f = w . n + v . f
-Scalar dot(Block & b, const Motion & m, const Force & f, const std::string & hint)
-{
-  std::vector<Term> t;
-  for(int i = 0; i < 3; ++i)
-  {
-    t.push_back(Term{1.0, {m.w[i], f.n[i]}});
-    t.push_back(Term{1.0, {m.v[i], f.f[i]}});
-  }
-  return b.sum(t, hint);
-}
-
-/// dI/dt x = [J w + hd x v; -hd x w]
+/// dI/dt x = [J w + hd x v; -hd x w]: the rigid-body layout without mass
 Force apply(Block & b, const InertiaRate & R, const Motion & x, const std::string & hint)
 {
-  Force o;
-  for(int i = 0; i < 3; ++i)
-  {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    o.n[i] = b.sum({Term{1.0, {R.J(i, 0), x.w[0]}}, Term{1.0, {R.J(i, 1), x.w[1]}}, Term{1.0, {R.J(i, 2), x.w[2]}},
-                    Term{1.0, {R.hd[j], x.v[k]}}, Term{-1.0, {R.hd[k], x.v[j]}}},
-                   fmt::format("{}_n{}", hint, i));
-    o.f[i] = b.sum({Term{-1.0, {R.hd[j], x.w[k]}}, Term{1.0, {R.hd[k], x.w[j]}}}, fmt::format("{}_f{}", hint, i));
-  }
-  return o;
+  return applyRigidLayout(b, R.J, R.hd, nullptr, x,
+                          [&](const char * part, int i) { return fmt::format("{}{}{}", hint, part, i); });
 }
 
 /// dI/dt of the world inertia I moving with the world twist v = [w; u].

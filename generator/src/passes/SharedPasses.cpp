@@ -116,6 +116,15 @@ std::string exportPass(Block & b, const std::vector<Scalar *> & outs, const std:
 
 SharedPasses::SharedPasses(const RobotModel & rm) : rm_(rm) {}
 
+template<class T>
+const T & SharedPasses::publish(std::optional<T> & slot, T && value, Block & b, const std::vector<Scalar *> & outs,
+                                const Export & e)
+{
+  definitions_.push_back(exportPass(b, outs, e.structName, e.fn, e.params, e.var, e.doc));
+  slot = std::move(value);
+  return *slot;
+}
+
 SharedPasses * SharedPasses::current()
 {
   return currentShared;
@@ -147,10 +156,9 @@ const std::vector<JointKernel> & SharedPasses::kernels()
     collect(outs, k.Xj);
     for(Motion & s : k.S) collect(outs, s);
   }
-  definitions_.push_back(exportPass(b, outs, "JointKernels", "joint_kernels", "[[maybe_unused]] const Config<S> & q", "K",
-                                    "Joint transforms X_j(q) and motion subspaces S(q) of every joint (non-constant entries)."));
-  kernels_ = std::move(K);
-  return *kernels_;
+  return publish(kernels_, std::move(K), b, outs,
+                 {"JointKernels", "joint_kernels", "[[maybe_unused]] const Config<S> & q", "K",
+                  "Joint transforms X_j(q) and motion subspaces S(q) of every joint (non-constant entries)."});
 }
 
 const std::vector<Xform> & SharedPasses::poses()
@@ -161,10 +169,9 @@ const std::vector<Xform> & SharedPasses::poses()
   std::vector<Xform> X0 = forwardMotion(ctx, MotionRequest::make(true, false), ctx.allJoints()).X0;
   std::vector<Scalar *> outs;
   for(Xform & X : X0) collect(outs, X);
-  definitions_.push_back(exportPass(b, outs, "JointPoses", "joint_poses", "[[maybe_unused]] const JointKernels<S> & K", "X0s",
-                                    "World pose X_0_k = X_j X_T X_0_p of every joint's body frame."));
-  poses_ = std::move(X0);
-  return *poses_;
+  return publish(poses_, std::move(X0), b, outs,
+                 {"JointPoses", "joint_poses", "[[maybe_unused]] const JointKernels<S> & K", "X0s",
+                  "World pose X_0_k = X_j X_T X_0_p of every joint's body frame."});
 }
 
 const std::pair<std::vector<Motion>, std::vector<Motion>> & SharedPasses::velocities()
@@ -179,11 +186,10 @@ const std::pair<std::vector<Motion>, std::vector<Motion>> & SharedPasses::veloci
     collect(outs, m.vJ[k]);
     collect(outs, m.v[k]);
   }
-  definitions_.push_back(exportPass(b, outs, "JointVelocities", "joint_velocities",
-                                    "[[maybe_unused]] const JointKernels<S> & K, [[maybe_unused]] const Tangent<S> & alpha", "Vs",
-                                    "Joint velocities vJ_k = S_k alpha_k and body velocities v_k = X_p_k v_p + vJ_k (body coordinates)."));
-  velocities_ = std::make_pair(std::move(m.vJ), std::move(m.v));
-  return *velocities_;
+  return publish(velocities_, std::make_pair(std::move(m.vJ), std::move(m.v)), b, outs,
+                 {"JointVelocities", "joint_velocities",
+                  "[[maybe_unused]] const JointKernels<S> & K, [[maybe_unused]] const Tangent<S> & alpha", "Vs",
+                  "Joint velocities vJ_k = S_k alpha_k and body velocities v_k = X_p_k v_p + vJ_k (body coordinates)."});
 }
 
 const VelocityProducts & SharedPasses::velocityProducts()
@@ -202,12 +208,10 @@ const VelocityProducts & SharedPasses::velocityProducts()
   std::vector<Scalar *> outs;
   for(Motion & c : vp.c) collect(outs, c);
   for(Force & p : vp.p) collect(outs, p);
-  definitions_.push_back(exportPass(b, outs, "VelocityProducts", "velocity_products",
-                                    "[[maybe_unused]] const JointVelocities<S> & Vs", "VPs",
-                                    "Velocity products of every joint: c_k = v_k x vJ_k (acceleration bias) and "
-                                    "p_k = v_k x* I_k v_k (force bias)."));
-  products_ = std::move(vp);
-  return *products_;
+  return publish(products_, std::move(vp), b, outs,
+                 {"VelocityProducts", "velocity_products", "[[maybe_unused]] const JointVelocities<S> & Vs", "VPs",
+                  "Velocity products of every joint: c_k = v_k x vJ_k (acceleration bias) and "
+                  "p_k = v_k x* I_k v_k (force bias)."});
 }
 
 const std::vector<Inertia> & SharedPasses::compositeInertias()
@@ -222,10 +226,9 @@ const std::vector<Inertia> & SharedPasses::compositeInertias()
     collect(outs, I.h);
     collect(outs, I.I);
   }
-  definitions_.push_back(exportPass(b, outs, "CompositeInertias", "composite_inertias", "[[maybe_unused]] const JointKernels<S> & K", "Ics",
-                                    "Composite inertia of every joint's subtree, in its body frame (Ic_p += X_p_i^T Ic_i X_p_i)."));
-  inertias_ = std::move(Ic);
-  return *inertias_;
+  return publish(inertias_, std::move(Ic), b, outs,
+                 {"CompositeInertias", "composite_inertias", "[[maybe_unused]] const JointKernels<S> & K", "Ics",
+                  "Composite inertia of every joint's subtree, in its body frame (Ic_p += X_p_i^T Ic_i X_p_i)."});
 }
 
 std::string SharedPasses::definitions() const

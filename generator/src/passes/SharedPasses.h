@@ -67,6 +67,17 @@ private:
   std::optional<VelocityProducts> products_;
   std::optional<std::vector<Inertia>> inertias_;
   std::vector<std::string> definitions_;
+
+  /// How an exported pass reads in the emitted code: struct, function, its parameters, the caller's
+  /// variable, the struct's documentation.
+  struct Export
+  {
+    const char * structName, * fn, * params, * var, * doc;
+  };
+  /// Exports the pass emitted in b (its results: the scalars outs points to, inside value), keeps its
+  /// definition and stores value (its entries now read from e.var) in slot.
+  template<class T>
+  const T & publish(std::optional<T> & slot, T && value, Block & b, const std::vector<Scalar *> & outs, const Export & e);
 };
 
 } // namespace rbdgen::passes

@@ -154,27 +154,20 @@ std::string supportJacobianDefinitions(const RobotModel & rm)
   for(std::size_t i = 0; i < rm.bodies.size(); ++i)
   {
     const BodyFrame & bf = rm.bodies[i];
-    cases += fmt::format("  case Body::{0}: return support_jacobian_{0}<S>(q, point, J);\n", bf.ident);
+    cases += fmt::format("  case Body::{0}: support_jacobian_{0}<S>(q, point, J); return;\n", bf.ident);
     const int frame = bf.owner < 0 ? -1 : frameLink[static_cast<std::size_t>(bf.owner)];
     if(frame >= 0 && frame != static_cast<int>(i))
     {
-      // X_0_link = X_c X_0_owner, X_c = (E_c, r_c); the point in the owner's coordinates: r_c + E_c^T point
+      // X_c = (E_c, r_c) the link in its owner's frame: the point in the owner's coordinates, r_c + E_c^T point
       const BodyFrame & owner = rm.bodies[static_cast<std::size_t>(frame)];
       Block b;
       const Xform C = linkXform(bf);
       const Vec3 po = add(b, C.r, tmul(b, C.E, vec3Var("point"), "po_Et"), "po");
       b.line(fmt::format("const Eigen::Matrix<S, 3, 1> point_owner({}, {}, {});", Block::text(po[0]), Block::text(po[1]), Block::text(po[2])));
-      b.line(fmt::format("const Pose<S> owner = support_jacobian_{}<S>(q, point_owner, J);", owner.ident));
-      Xform O;
-      for(int r = 0; r < 3; ++r)
-        for(int c = 0; c < 3; ++c) O.E(r, c) = Scalar::var(fmt::format("owner.rotation({}, {})", r, c));
-      for(int r = 0; r < 3; ++r) O.r[r] = Scalar::var(fmt::format("owner.translation({})", r));
-      b.line("Pose<S> link;");
-      writePose(b, "link", compose(b, C, O, "L_" + bf.ident));
-      b.line("return link;");
+      b.line(fmt::format("support_jacobian_{}<S>(q, point_owner, J);", owner.ident));
       fixedLinks += fmt::format("/// link '{}': fixed to '{}'\n"
                          "template<class S>\n"
-                         "inline Pose<S> support_jacobian_{}(const Config<S> & q, const Eigen::Matrix<S, 3, 1> & point,\n"
+                         "inline void support_jacobian_{}(const Config<S> & q, const Eigen::Matrix<S, 3, 1> & point,\n"
                          "    Eigen::Matrix<S, 6, nv> & J) noexcept\n"
                          "{{\n{}}}\n\n",
                          bf.name, owner.name, bf.ident, b.str("  "));
@@ -194,11 +187,9 @@ std::string supportJacobianDefinitions(const RobotModel & rm)
       for(int d = 0; d < mj.nv; ++d) args += fmt::format(", col_{}_{}", mj.tag, d);
       return args;
     });
-    b.line("Pose<S> link;");
-    writePose(b, "link", X);
     if(!path.empty())
     {
-      // p = o_link + E_link^T point, from the symbolic pose (reading `link` back would wait on its stores)
+      // p = o_link + E_link^T point, from the symbolic pose
       const Vec3 p = add(b, X.r, tmul(b, X.E, vec3Var("point"), "p_Et"), "p");
       b.line(fmt::format("const Eigen::Matrix<S, 3, 1> p({}, {}, {});", Block::text(p[0]), Block::text(p[1]), Block::text(p[2])));
     }
@@ -228,30 +219,28 @@ std::string supportJacobianDefinitions(const RobotModel & rm)
       b.line(fmt::format("detail::zero_columns<S>(J, {}, {});", c, n));
       c += n;
     }
-    b.line("return link;");
     std::string joints;
     for(int k : path) joints += " '" + rm.joints[static_cast<std::size_t>(k)].name + "'";
     out += fmt::format("/// link '{}': {}\n"
                        "template<class S>\n"
-                       "inline Pose<S> support_jacobian_{}([[maybe_unused]] const Config<S> & q,\n"
+                       "inline void support_jacobian_{}([[maybe_unused]] const Config<S> & q,\n"
                        "    [[maybe_unused]] const Eigen::Matrix<S, 3, 1> & point, [[maybe_unused]] Eigen::Matrix<S, 6, nv> & J) noexcept\n"
                        "{{\n{}}}\n\n",
                        bf.name, path.empty() ? "on the world, no moving joint" : "support path" + joints, bf.ident, b.str("  "));
   }
   out += fixedLinks;
   out += "/// From q, along `body`'s support path only: J (world axes, at `point`, given in link coordinates;\n"
-         "/// the columns of the joints off the path are zero); returns the link's world pose. Shared by\n"
-         "/// jacobian() and jacobian_dot_times_alpha() from q.\n"
+         "/// the columns of the joints off the path are zero). Shared by jacobian() and\n"
+         "/// jacobian_dot_times_alpha() from q.\n"
          "template<class S>\n"
-         "inline Pose<S> support_jacobian(Body body, const Config<S> & q, const Eigen::Matrix<S, 3, 1> & point,\n"
-         "                                Eigen::Matrix<S, 6, nv> & J) noexcept\n"
+         "inline void support_jacobian(Body body, const Config<S> & q, const Eigen::Matrix<S, 3, 1> & point,\n"
+         "                             Eigen::Matrix<S, 6, nv> & J) noexcept\n"
          "{\n"
          "  switch(body)\n"
          "  {\n" +
          cases +
          "  }\n"
          "  J.setZero(); // (not a Body)\n"
-         "  return {Eigen::Matrix<S, 3, 3>::Identity(), Eigen::Matrix<S, 3, 1>::Zero()};\n"
          "}";
   return out;
 }

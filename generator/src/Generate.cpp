@@ -124,7 +124,7 @@ std::vector<GeneratedFile> generateScene(const GenerateOptions & opt, std::vecto
   if(opt.batch)
   {
     emit::BatchFunctions bf;
-    bf.forwardDynamics = coupling.empty() ? emit::unregularisedMasslessJoints(rm, fx).empty()
+    bf.forwardDynamics = coupling.empty() ? emit::hasForwardDynamics(rm, fx)
                                           : emit::coupledSceneForwardDynamics(rm, fx, coupling);
     bf.derivatives = scene.outputs.derivatives;
     bf.gravityTorques = fx.gravity.has_value();

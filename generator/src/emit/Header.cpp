@@ -189,7 +189,7 @@ std::string emitDynamicsHeader(const RobotModel & rm, const HeaderSpec & spec)
   const bool gravity = fx.gravity.has_value(), velocity = fx.velocityTerms, wrenches = !fx.wrenchBodies.empty();
   const bool genBias = gravity || velocity || wrenches || !fx.contacts.empty() || fx.hasDamping() || fx.hasFriction();
   const std::vector<std::string> singular = unregularisedMasslessJoints(rm, fx);
-  const bool fd = singular.empty() && rm.checks.stackedFree.empty();
+  const bool fd = hasForwardDynamics(rm, fx);
   const FdChoice choice = robotApi ? chooseForwardDynamics(rm) : FdChoice{};
   HeaderSections h;
   h.values = preludeValues(rm, spec.ns, robotApi ? spec.provenance + "\n// Forward dynamics: " + choice.doc + "." : spec.provenance,

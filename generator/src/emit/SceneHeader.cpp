@@ -306,6 +306,11 @@ std::string describeEffects(const rbd::scene::Scene & scene, const SceneEffects 
   return s;
 }
 
+bool hasForwardDynamics(const RobotModel & rm, const SceneEffects & fx)
+{
+  return rm.checks.stackedFree.empty() && unregularisedMasslessJoints(rm, fx).empty();
+}
+
 bool coupledSceneForwardDynamics(const RobotModel & rm, const SceneEffects & fx, const rbd::parsers::MimicCoupling & c)
 {
   if(!rm.checks.stackedFree.empty()) return false;

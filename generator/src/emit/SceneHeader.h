@@ -23,6 +23,10 @@ SceneEffects sceneEffects(const RobotModel & rm, const rbd::scene::Scene & scene
 /// every dof: H + diag(armature) is singular when this is not empty.
 std::vector<std::string> unregularisedMasslessJoints(const RobotModel & rm, const SceneEffects & fx);
 
+/// Whether the model with effects fx has forward dynamics: no unregularised massless joint and no
+/// stacked free joints (H + diag(armature) regular). The header and the batch header both ask this.
+bool hasForwardDynamics(const RobotModel & rm, const SceneEffects & fx);
+
 /// "gravity (0, 0, -9.81); velocity terms; damping on 3 dofs; ..." (provenance).
 std::string describeEffects(const rbd::scene::Scene & scene, const SceneEffects & fx);
 

@@ -74,6 +74,14 @@ bool isTransparent(const std::string & l)
 /// ("x"), or "" for any other line (a call, a loop, a brace: nothing can move across it).
 std::string writtenObject(const std::string & l)
 {
+  // detail::set_pose(x..., ...) and detail::set_motion(x..., ...) write their first argument only
+  for(const std::string setter : {"detail::set_pose(", "detail::set_motion("})
+    if(l.rfind(setter, 0) == 0)
+    {
+      std::size_t j = setter.size();
+      while(j < l.size() && isPart(l[j])) ++j;
+      return l.substr(setter.size(), j - setter.size());
+    }
   if(l.empty() || !isStart(l[0])) return "";
   std::size_t i = 0;
   while(i < l.size() && isPart(l[i])) ++i;

@@ -46,7 +46,7 @@ EmittedBody centroidalMomentumMatrixBody(const RobotModel & rm)
   PassContext ctx(b, rm);
   const std::vector<Xform> X0 = forwardMotion(ctx, MotionRequest::make(true, false, false), ctx.allJoints()).X0;
   const std::vector<Inertia> Ic = compositeInertias(ctx);
-  const Vec3 com = centerOfMass(ctx, X0);
+  const Vec3 com = centerOfMassFromComposites(ctx, X0, Ic);
   // Column: momentum of the subtree moving with S: X_0_j^T (Ic_j S) in world at the origin, then
   // about the CoM: n_G = n_O - com x f.
   for(std::size_t k = 0; k < rm.joints.size(); ++k)

@@ -31,8 +31,12 @@ EmittedBody finish(const cg::Block & b);
 
 /// Reads q; fills `res[b]` (std::array<Pose<S>, nbodies>) with every link's world pose.
 EmittedBody forwardKinematicsBody(const RobotModel & rm);
-/// Reads q; fills `kin.pose[b]` (links) and `kin.frame[k]` (moving joints' body frames).
-EmittedBody kinematicsBody(const RobotModel & rm);
+/// detail::link_poses(X0s, res): every link's world pose from the shared joint poses (the header's
+/// shared passes must be current, and have emitted joint_poses).
+std::string linkPosesDefinition(const RobotModel & rm);
+/// Reads q; declares the shared passes' K and X0s, fills `kin.frame[k]` (moving joints' body frames)
+/// when `frames`, and calls detail::link_poses into `dst` (forward_kinematics: "res"; kinematics: "kin.pose").
+EmittedBody linkPosesCallBody(const RobotModel & rm, const std::string & dst, bool frames);
 
 /// Which terms of the recursive Newton-Euler algorithm are present.
 struct RneaTerms
@@ -109,11 +113,12 @@ void writePointColumns(cg::Block & b, const MovingJoint & mj, const passes::Join
                        const cg::Vec3 & p);
 /// Reads `kin` (Kinematics<S>) and `body` (Body); fills `J` (6 x nv, world axes at the link origin).
 EmittedBody jacobianBody(const RobotModel & rm);
-/// The header's detail functions for Jacobians from q (plain and scene headers): one step function
-/// per moving joint (detail::support_step_<tag>, passes::supportStepFunctions: its columns at the
-/// world origin), detail::move_columns, and detail::support_jacobian(body, q, point, J), a switch
-/// with one straight-line case per link that fills the columns of the link's support path in `J`
-/// (world axes, at `point` given in link coordinates) and returns the link's world pose.
+/// The header's detail functions for Jacobians from q (plain and scene headers): put_rotation,
+/// put_column (a support step's column moved to the point, by kind), zero_columns, world_point, one
+/// step function per moving joint (detail::support_step_<tag>, passes::supportStepFunctions: its
+/// columns stored by kind), one function per link walking its support path, and
+/// detail::support_jacobian(body, q, point, J), the switch over the links that fills the columns of
+/// the link's support path in `J` (world axes, at `point` given in link coordinates) and zeros the others.
 std::string supportJacobianDefinitions(const RobotModel & rm);
 /// Reads `kin`; returns the centre of mass in world coordinates in `com`.
 EmittedBody centerOfMassBody(const RobotModel & rm);

@@ -150,9 +150,11 @@ void robotApiSections(HeaderSections & h, const RobotModel & rm, const FdChoice 
 {
   auto & v = h.values;
   v["fd_algorithm"] = fd ? choice.doc : "none (singular mass matrix)";
-  v["fn_forward_kinematics"] = forwardKinematicsBody(rm).text;
-  v["fn_kinematics"] = kinematicsBody(rm).text;
   shared.kernels(); // (detail::inverse_dynamics_from takes them, even when no joint has a kernel entry)
+  shared.poses();   // (detail::link_poses takes them)
+  v["link_poses"] = linkPosesDefinition(rm);
+  v["fn_forward_kinematics"] = linkPosesCallBody(rm, "res", false).text;
+  v["fn_kinematics"] = linkPosesCallBody(rm, "kin.pose", true).text;
   v["fn_inverse_dynamics_from"] = inverseDynamicsFromKernelsBody(rm).text;
   v["fn_inverse_dynamics_fext"] = inverseDynamicsWrenchesBody(rm).text;
   v["gravity_magnitude"] = gravityLiteral();

@@ -66,12 +66,8 @@ EmittedBody inverseDynamicsWrenchesBody(const RobotModel & rm)
   ctx.kernel(0); // (declares K)
   b.line("Tangent<S> tau;");
   b.line(fmt::format("detail::inverse_dynamics_from<S>(K, alpha, alphaD, {}, tau);", gravityLiteral()));
-  std::vector<Force> w;
-  for(std::size_t i = 0; i < rm.bodies.size(); ++i)
-  {
-    const std::string slot = linkSlot(rm, "fext", static_cast<int>(i));
-    w.push_back({vec3Var(slot, 0), vec3Var(slot, 3)});
-  }
+  std::vector<std::string> w;
+  for(std::size_t i = 0; i < rm.bodies.size(); ++i) w.push_back(linkSlot(rm, "fext", static_cast<int>(i)));
   worldWrenchTorques(ctx, m.X0, w, [&](int k, const std::vector<Scalar> & tau) {
     const MovingJoint & mj = ctx.joint(k);
     for(int d = 0; d < mj.nv; ++d)

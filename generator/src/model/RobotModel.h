@@ -37,6 +37,12 @@ struct BodyFrame
   int owner = -1;           ///< moving joint carrying the body, -1: static
   sva::PTransformd X_owner_link; ///< from the owner's body frame (world if owner < 0) to the link frame
   double mass = 0.0;
+
+  /// The link frame is its owner's body frame (X_owner_link is exactly the identity).
+  bool atOwnerFrame() const
+  {
+    return X_owner_link.translation().isZero(0.0) && X_owner_link.rotation().isIdentity(0.0);
+  }
 };
 
 struct RobotModel

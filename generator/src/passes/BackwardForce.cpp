@@ -90,21 +90,32 @@ void backwardForces(PassContext & ctx, std::vector<Force> & f,
   }
 }
 
-void worldWrenchTorques(PassContext & ctx, const std::vector<Xform> & X0, const std::vector<Force> & linkWrench,
+void worldWrenchTorques(PassContext & ctx, const std::vector<Xform> & X0, const std::vector<std::string> & linkWrench,
                         const std::function<void(int k, const std::vector<Scalar> & tau)> & onTau)
 {
   Block & b = ctx.block();
   const RobotModel & rm = ctx.model();
-  std::vector<Force> W(rm.joints.size(), Force::zero());
-  b.comment("W_k: the wrenches on joint k's subtree (world coordinates at the world origin)");
+  // the terms of W_k: its own links' wrenches (body order), then its children's W (leaves first)
+  std::vector<std::string> terms(rm.joints.size());
+  auto addTerm = [&](int k, const std::string & x) {
+    std::string & t = terms[static_cast<std::size_t>(k)];
+    t += (t.empty() ? "" : " + ") + x;
+  };
   for(std::size_t i = 0; i < rm.bodies.size(); ++i)
-  {
-    const int o = rm.bodies[i].owner; // a link that never moves takes no wrench
-    if(o >= 0) W[static_cast<std::size_t>(o)] = add(b, W[static_cast<std::size_t>(o)], linkWrench[i], ctx.joint(o).tag + "_W");
-  }
+    if(const int o = rm.bodies[i].owner; o >= 0) addTerm(o, linkWrench[i]); // (a link that never moves takes no wrench)
+  b.comment("W_k: the wrenches on joint k's subtree (world coordinates at the world origin)");
+  std::vector<Force> W(rm.joints.size());
   for(std::size_t k = W.size(); k-- > 0;)
-    if(const int p = rm.joints[k].parent; p >= 0)
-      W[static_cast<std::size_t>(p)] = add(b, W[static_cast<std::size_t>(p)], W[k], ctx.joint(p).tag + "_W");
+  {
+    const std::string name = ctx.joint(static_cast<int>(k)).tag + "_W";
+    b.line(fmt::format("const Wrench<S> {} = {};", name, terms[k]));
+    for(int i = 0; i < 3; ++i)
+    {
+      W[k].n[i] = Scalar::var(fmt::format("{}({})", name, i));
+      W[k].f[i] = Scalar::var(fmt::format("{}({})", name, i + 3));
+    }
+    if(const int p = rm.joints[k].parent; p >= 0) addTerm(p, name);
+  }
   b.comment("tau_ext,k = S_k^T X_0_k^* W_k");
   for(std::size_t k = 0; k < W.size(); ++k)
   {

@@ -41,8 +41,10 @@ void backwardForces(PassContext & ctx, std::vector<Force> & f,
 ///   W_k = sum of the wrenches on the links of joint k's subtree (world coordinates at the world
 ///   origin, so they add without transforms), tau_ext,k = S_k^T X_0_k^* W_k,
 /// handed to onTau(k, tau_ext,k) for every joint; inverse dynamics with the wrenches is tau - tau_ext.
-/// linkWrench: per link (body index), zero where none; X0: world poses of every joint's body frame.
-void worldWrenchTorques(PassContext & ctx, const std::vector<Xform> & X0, const std::vector<Force> & linkWrench,
+/// linkWrench: per link (body index), the C++ expression of its wrench (a 6-vector [n; f]); W_k is
+/// summed as one 6-vector statement per joint (`const Wrench<S> <tag>_W = ...;`); X0: world poses of
+/// every joint's body frame.
+void worldWrenchTorques(PassContext & ctx, const std::vector<Xform> & X0, const std::vector<std::string> & linkWrench,
                         const std::function<void(int k, const std::vector<Scalar> & tau)> & onTau);
 
 /// onTau that writes `<dst>[i] = tau;` for each dof i of joint k.

@@ -58,4 +58,20 @@ Vec3 centerOfMass(PassContext & ctx, const std::vector<Xform> & X0)
   return scale(ctx.block(), Scalar::constant(M > 0 ? 1.0 / M : 0.0), totalFirstMoment(ctx, X0), "com");
 }
 
+Vec3 centerOfMassFromComposites(PassContext & ctx, const std::vector<Xform> & X0, const std::vector<Inertia> & Ic)
+{
+  Block & b = ctx.block();
+  const RobotModel & rm = ctx.model();
+  b.comment("com = (sum over the root joints r of Mc_r o_r + E_0_r^T hc_r + static first moment) / M");
+  Vec3 sum = Vec3::constant(rm.staticMoment);
+  for(std::size_t r = 0; r < rm.joints.size(); ++r)
+  {
+    if(rm.joints[r].parent >= 0) continue;
+    const std::string & t = rm.joints[r].tag;
+    sum = add(b, sum, add(b, tmul(b, X0[r].E, Ic[r].h, t + "_hc"), scale(b, Ic[r].m, X0[r].r, t + "_Mo"), t + "_mc"), t + "_sum");
+  }
+  const double M = rm.totalMass;
+  return scale(b, Scalar::constant(M > 0 ? 1.0 / M : 0.0), sum, "com");
+}
+
 } // namespace rbdgen::passes

@@ -22,4 +22,8 @@ Vec3 totalFirstMoment(PassContext & ctx, const std::vector<Xform> & X0);
 /// Centre of mass (world): totalFirstMoment / total mass.
 Vec3 centerOfMass(PassContext & ctx, const std::vector<Xform> & X0);
 
+/// The same from the composite inertias Ic of a composite-inertia pass: the first moments of the
+/// root joints' subtrees (Mc o + E^T hc), one per root instead of one per body.
+Vec3 centerOfMassFromComposites(PassContext & ctx, const std::vector<Xform> & X0, const std::vector<Inertia> & Ic);
+
 } // namespace rbdgen::passes

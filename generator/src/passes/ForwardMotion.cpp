@@ -16,7 +16,7 @@ MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const st
   if(shared && req.poses)
   {
     ctx.kernel(0); // declares K
-    ctx.callOnce("[[maybe_unused]] const auto X0s = detail::joint_poses<S>(K);");
+    ctx.callOnce(SharedPasses::posesCall());
     m.X0 = shared->poses();
   }
   if(shared && req.velocity)

@@ -42,11 +42,6 @@ std::string numbers(const Eigen::Matrix3d & M) // row by row
   return numbers(std::vector<double>{M(0, 0), M(0, 1), M(0, 2), M(1, 0), M(1, 1), M(1, 2), M(2, 0), M(2, 1), M(2, 2)});
 }
 
-bool offOwner(const BodyFrame & bf)
-{
-  return !(bf.X_owner_link.translation().isZero(0.0) && bf.X_owner_link.rotation().isIdentity(0.0));
-}
-
 } // namespace
 
 Xform treeXform(const MovingJoint & mj)
@@ -56,7 +51,7 @@ Xform treeXform(const MovingJoint & mj)
 
 Xform linkXform(const BodyFrame & bf)
 {
-  return offOwner(bf) ? namedXform(bf.X_owner_link, "model::L_" + bf.ident) : constantXform(bf.X_owner_link);
+  return bf.atOwnerFrame() ? constantXform(bf.X_owner_link) : namedXform(bf.X_owner_link, "model::L_" + bf.ident);
 }
 
 std::string modelConstants(const RobotModel & rm)
@@ -78,7 +73,7 @@ std::string modelConstants(const RobotModel & rm)
                        numbers(symmetricInertia(mj)), mj.name, moved);
   }
   for(const BodyFrame & bf : rm.bodies)
-    if(offOwner(bf))
+    if(!bf.atOwnerFrame())
       out += fmt::format("constexpr LinkConstants L_{} = {{/*E*/ {}, /*r*/ {}}}; // link '{}' on {}\n", bf.ident,
                          numbers(Eigen::Matrix3d(bf.X_owner_link.rotation())), numbers(Eigen::Vector3d(bf.X_owner_link.translation())),
                          bf.name, bf.owner < 0 ? "the world" : "joint '" + rm.joints[static_cast<std::size_t>(bf.owner)].name + "'");

@@ -45,6 +45,11 @@ void PassContext::kernelsFromCaller()
   calls_.insert(kernelsCall());
 }
 
+void PassContext::fromCaller(const std::string & line)
+{
+  calls_.insert(line);
+}
+
 void PassContext::callOnce(const std::string & line)
 {
   if(calls_.insert(line).second) b_.line(line);

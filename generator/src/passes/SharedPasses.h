@@ -34,6 +34,8 @@ public:
   const std::vector<JointKernel> & kernels();
   /// X_0_k of every joint, entries read from `X0s` (`detail::joint_poses<S>(K)`).
   const std::vector<Xform> & poses();
+  /// The statement that declares `X0s` in a body.
+  static const char * posesCall() { return "[[maybe_unused]] const auto X0s = detail::joint_poses<S>(K);"; }
   /// vJ_k = S_k alpha_k and v_k of every joint, entries read from `Vs` (`detail::joint_velocities<S>(K, alpha)`).
   const std::pair<std::vector<Motion>, std::vector<Motion>> & velocities();
   /// c_k and p_k of every joint at velocities(), entries read from `VPs` (`detail::velocity_products<S>(Vs)`).

@@ -1,6 +1,7 @@
 #include "SupportPath.h"
 
 #include <algorithm>
+#include <cctype>
 #include <utility>
 
 #include <fmt/format.h>
@@ -14,6 +15,23 @@ bool hasAngle(const MovingJoint & mj)
 {
   const auto t = mj.joint.type();
   return t == rbd::Joint::Rev || t == rbd::Joint::Cylindrical || t == rbd::Joint::Planar;
+}
+
+/// A step reads q beyond its angle's sin and cos (all but revolute joints).
+bool readsConfig(const MovingJoint & mj)
+{
+  return mj.joint.type() != rbd::Joint::Rev;
+}
+
+/// The emitted text reads or writes the local `name` (not as part of a longer name).
+bool mentions(const std::string & text, const std::string & name)
+{
+  for(auto p = text.find(name); p != std::string::npos; p = text.find(name, p + 1))
+  {
+    const auto part = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    if((p == 0 || !part(text[p - 1])) && (p + name.size() >= text.size() || !part(text[p + name.size()]))) return true;
+  }
+  return false;
 }
 
 std::size_t maxDepth(const RobotModel & rm)
@@ -34,11 +52,11 @@ Xform poseVars(const std::string & E, const std::string & o)
 }
 
 // E = X.E, o = X.r for mutable E, o that X may read: entries that are other entries of E or o are
-// copied first (the assignments run in order), entries already in place are skipped.
-// E, o = X entry by entry; an entry already equal to its value is skipped (E and o hold the pose
-// named fromE, fromO: E itself, or the pose they were initialised from).
-void assignPose(Block & b, const std::string & E, const std::string & o, const Xform & X, std::string fromE = "",
-                std::string fromO = "")
+// copied first (the assignments run in order), entries already in place are skipped: those that
+// read as the pose named fromE, fromO (E itself, or the pose they were initialised from), and the
+// constants of the identity when E, o hold it (a walk's first step).
+void assignPose(Block & b, const std::string & E, const std::string & o, const Xform & X, bool fromIdentity,
+                std::string fromE = "", std::string fromO = "")
 {
   if(fromE.empty()) fromE = E;
   if(fromO.empty()) fromO = o;
@@ -63,6 +81,8 @@ void assignPose(Block & b, const std::string & E, const std::string & o, const X
   for(std::size_t m = 0; m < moves.size(); ++m)
   {
     const auto & [dst, x] = moves[m];
+    const double identity = m < 9 && m % 4 == 0 ? 1.0 : 0.0; // (E(r, r) are entries 0, 4 and 8)
+    if(x.isConst() && fromIdentity && x.value() == identity) continue;
     if(x.isConst() || (x.name() != dst && x.name() != current[m])) b.line(fmt::format("{} = {};", dst, Block::text(x)));
   }
 }
@@ -102,7 +122,7 @@ std::string supportPathTables(const RobotModel & rm)
 }
 
 void emitJumpWalk(Block & b, const RobotModel & rm, const std::string & prefix, const std::string & what,
-                  const std::function<void(int k, const MovingJoint & mj)> & jointBlock)
+                  const std::function<void(Block & jb, int k, const MovingJoint & mj)> & jointBlock)
 {
   auto label = [&](int k) {
     return k < 0 ? prefix + "_done" : fmt::format("{}_{}", prefix, rm.joints[static_cast<std::size_t>(k)].tag);
@@ -130,13 +150,27 @@ void emitJumpWalk(Block & b, const RobotModel & rm, const std::string & prefix, 
     b.line(text + line + fmt::format(" goto {};", label(owner)));
   }
   b.line("}");
+  bool doneUsed = std::find(owners.begin(), owners.end(), -1) != owners.end(); // (a link on the world)
   for(std::size_t k = rm.joints.size(); k-- > 0;)
   {
-    b.line(fmt::format("{}: {{ // joint '{}': {}", label(static_cast<int>(k)), rm.joints[k].name, what));
-    jointBlock(static_cast<int>(k), rm.joints[k]);
-    b.line(fmt::format("}} goto {};", label(rm.joints[k].parent)));
+    // a joint's statements between braces when they declare locals (a jump may not cross them), and
+    // a jump to its parent unless the parent's block comes next
+    Block jb;
+    jointBlock(jb, static_cast<int>(k), rm.joints[k]);
+    std::vector<std::string> lines; // (its statements after the removal of unused locals)
+    const std::string text = jb.str("");
+    for(std::size_t from = 0, to; (to = text.find('\n', from)) != std::string::npos; from = to + 1) lines.push_back(text.substr(from, to - from));
+    bool declares = false;
+    for(const std::string & l : lines) declares = declares || l.rfind("const ", 0) == 0 || l.rfind("[[maybe_unused]] const ", 0) == 0;
+    b.line(fmt::format("{}:{} // joint '{}': {}", label(static_cast<int>(k)), declares ? " {" : "", rm.joints[k].name, what));
+    for(const std::string & l : lines) b.line(l);
+    const int parent = rm.joints[k].parent;
+    const std::string jump = parent == static_cast<int>(k) - 1 ? "" : fmt::format("goto {};", label(parent));
+    doneUsed = doneUsed || (parent < 0 && !jump.empty());
+    if(declares) b.line(jump.empty() ? "}" : "} " + jump);
+    else if(!jump.empty()) b.line(jump);
   }
-  b.line(label(-1) + ":;");
+  if(doneUsed) b.line(label(-1) + ":;"); // (else every path falls through to here: an unused label is a warning)
 }
 
 std::string supportStepFunctions(const RobotModel & rm, const std::string & prefix,
@@ -144,7 +178,7 @@ std::string supportStepFunctions(const RobotModel & rm, const std::string & pref
                                  const std::function<void(Block & b, int k, const JointKernel & K, const Xform & X0)> & jointBlock)
 {
   std::string out;
-  const Xform walk = poseVars("walk_E", "walk_o");
+  const Xform walk = poseVars("X.rotation", "X.translation"); // (the walk's pose)
   for(std::size_t k = 0; k < rm.joints.size(); ++k)
   {
     const MovingJoint & mj = rm.joints[k];
@@ -155,14 +189,20 @@ std::string supportStepFunctions(const RobotModel & rm, const std::string & pref
     // X_0_k = X_j X_T X_0_p (X_0_p = identity for a joint on the world)
     const Xform X0 = compose(b, K.Xj, mj.parent < 0 ? Xt : compose(b, Xt, walk, mj.tag + "_X0t"), mj.tag + "_X0");
     jointBlock(b, static_cast<int>(k), K, X0);
-    assignPose(b, "walk_E", "walk_o", X0);
+    assignPose(b, "X.rotation", "X.translation", X0, mj.parent < 0); // (a joint on the world starts every walk: identity)
+    const std::string body = b.str("  ");
+    auto param = [&](const std::string & type, const std::string & name) {
+      return (mentions(body, name) ? "" : "[[maybe_unused]] ") + type + " " + name;
+    };
+    std::string params = (readsConfig(mj) ? "const Config<S> & q, " : "") + std::string(hasAngle(mj) ? "const S & s, const S & c, " : "") +
+                         param("Pose<S> &", "X") + extraParams(mj);
+    const std::string head = fmt::format("RBDGEN_INLINE void {}_{}(", prefix, mj.tag);
+    if(head.size() + params.size() + 11 > 120) params = "\n    " + params; // (11: ") noexcept")
     out += fmt::format("/// joint '{}' ({}){}\n"
                        "template<class S>\n"
-                       "RBDGEN_INLINE void {}_{}([[maybe_unused]] const Config<S> & q, {}Eigen::Matrix<S, 3, 3> & walk_E,\n"
-                       "    [[maybe_unused]] Eigen::Matrix<S, 3, 1> & walk_o{}) noexcept\n"
+                       "{}{}) noexcept\n"
                        "{{\n{}}}\n\n",
-                       mj.name, describeJoint(mj), mj.parent < 0 ? ", on the world" : "", prefix, mj.tag,
-                       hasAngle(mj) ? "const S & s, const S & c, " : "", extraParams(mj), b.str("  "));
+                       mj.name, describeJoint(mj), mj.parent < 0 ? ", on the world" : "", head, params, body);
   }
   return out;
 }
@@ -187,13 +227,15 @@ Xform emitLinkWalk(Block & b, const RobotModel & rm, const BodyFrame & bf, const
     for(std::size_t j = 0; j < n; ++j) sinCos[static_cast<std::size_t>(angleJoints[i + j])] = fmt::format("{0}.s[{1}], {0}.c[{1}], ", name, j);
     i += n;
   }
-  b.line("Eigen::Matrix<S, 3, 3> walk_E = Eigen::Matrix<S, 3, 3>::Identity();");
-  b.line("Eigen::Matrix<S, 3, 1> walk_o = Eigen::Matrix<S, 3, 1>::Zero();");
+  b.line("Pose<S> walk{detail::Mat3<S>::Identity(), detail::Vec3<S>::Zero()};");
   for(int k : path)
-    b.line(fmt::format("detail::{}_{}<S>(q, {}walk_E, walk_o{});", prefix, rm.joints[static_cast<std::size_t>(k)].tag,
-                       sinCos[static_cast<std::size_t>(k)], extraArgs(rm.joints[static_cast<std::size_t>(k)])));
+  {
+    const MovingJoint & mj = rm.joints[static_cast<std::size_t>(k)];
+    b.line(fmt::format("detail::{}_{}<S>({}{}walk{});", prefix, mj.tag, readsConfig(mj) ? "q, " : "",
+                       sinCos[static_cast<std::size_t>(k)], extraArgs(mj)));
+  }
   // X_0_link = X_owner_link X_0_owner (the owner's pose is the walk's end)
-  return compose(b, linkXform(bf), poseVars("walk_E", "walk_o"), "L_" + bf.ident);
+  return compose(b, linkXform(bf), poseVars("walk.rotation", "walk.translation"), "L_" + bf.ident);
 }
 
 } // namespace rbdgen::passes

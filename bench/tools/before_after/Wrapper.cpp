@@ -1,4 +1,5 @@
-// Compiled once per generated header: -DRBDGEN_NS=<namespace> -DRBDGEN_ROBOT="robot" -DRBDGEN_VERSION_TAG="before|after".
+// Compiled once per generated header:
+//   -DRBDGEN_NS=<namespace> -DRBDGEN_ROBOT="robot" -DRBDGEN_VERSION_TAG="before|after".
 #include <array>
 #include <chrono>
 #include <type_traits>
@@ -20,22 +21,30 @@ using Config = ns::Config<double>;
 using Tangent = ns::Tangent<double>;
 using Wrenches = std::array<ns::Wrench<double>, ns::nbodies>;
 
-struct Inputs // one state in the header's types
+// The states in the header's types, one array per input, so that a function's loop reads only
+// what it takes (a compact array of q for the functions of q, as a user's loop would).
+struct Inputs
 {
-  Config q;
-  Tangent alpha, alphaD;
-  Wrenches fext;
-  ns::Kinematics<double> kin;
+  std::vector<Config> q;
+  std::vector<Tangent> alpha, alphaD;
+  std::vector<Wrenches> fext;
+  std::vector<ns::Kinematics<double>> kin;
 };
 
-Inputs inputs(const State & s)
+Inputs inputs(const std::vector<State> & states)
 {
   Inputs in;
-  in.q = Eigen::Map<const Config>(s.q.data());
-  in.alpha = Eigen::Map<const Tangent>(s.alpha.data());
-  in.alphaD = Eigen::Map<const Tangent>(s.alphaD.data());
-  for(int b = 0; b < ns::nbodies; ++b) in.fext[static_cast<std::size_t>(b)] = Eigen::Map<const ns::Wrench<double>>(s.fext.data() + 6 * b);
-  in.kin = ns::kinematics<double>(in.q);
+  for(const State & s : states)
+  {
+    in.q.push_back(Eigen::Map<const Config>(s.q.data()));
+    in.alpha.push_back(Eigen::Map<const Tangent>(s.alpha.data()));
+    in.alphaD.push_back(Eigen::Map<const Tangent>(s.alphaD.data()));
+    Wrenches f;
+    for(int b = 0; b < ns::nbodies; ++b)
+      f[static_cast<std::size_t>(b)] = Eigen::Map<const ns::Wrench<double>>(s.fext.data() + 6 * b);
+    in.fext.push_back(f);
+    in.kin.push_back(ns::kinematics<double>(in.q.back()));
+  }
   return in;
 }
 
@@ -70,22 +79,22 @@ template<class T, std::size_t N>
 double probe(const std::array<T, N> & a) { return probe(a.front()) + probe(a.back()); }
 double probe(const ns::Kinematics<double> & k) { return probe(k.pose) + probe(k.frame); }
 
-// F: (Body, const Inputs &) -> result, a noinline function (the call a user's code makes).
+// F: (Body, const Inputs &, state index) -> result, a noinline function (the call a user's code makes).
 template<auto F>
 void eval(int body, const State & s, std::vector<double> & out)
 {
   out.clear();
-  flatten(F(static_cast<ns::Body>(body), inputs(s)), out);
+  flatten(F(static_cast<ns::Body>(body), inputs({s}), 0), out);
 }
 
 template<auto F>
 double time(int body, const std::vector<State> & states, int iters)
 {
-  std::vector<Inputs> in;
-  for(const State & s : states) in.push_back(inputs(s));
+  const Inputs in = inputs(states);
   double checksum = 0;
   const auto t0 = std::chrono::steady_clock::now();
-  for(int i = 0; i < iters; ++i) checksum += probe(F(static_cast<ns::Body>(body), in[static_cast<std::size_t>(i) % in.size()]));
+  for(int i = 0; i < iters; ++i)
+    checksum += probe(F(static_cast<ns::Body>(body), in, static_cast<std::size_t>(i) % in.q.size()));
   const auto t1 = std::chrono::steady_clock::now();
   volatile double keep = checksum;
   static_cast<void>(keep);
@@ -93,36 +102,54 @@ double time(int body, const std::vector<State> & states, int iters)
 }
 
 #define RBDGEN_NOINLINE __attribute__((noinline))
-RBDGEN_NOINLINE auto forwardKinematics(ns::Body, const Inputs & x) { return ns::forward_kinematics<double>(x.q); }
-RBDGEN_NOINLINE auto kinematics(ns::Body, const Inputs & x) { return ns::kinematics<double>(x.q); }
-RBDGEN_NOINLINE auto jacobianKin(ns::Body b, const Inputs & x) { return ns::jacobian<double>(b, x.kin); }
-RBDGEN_NOINLINE auto jacobianQ(ns::Body b, const Inputs & x) { return ns::jacobian<double>(b, x.q); }
+RBDGEN_NOINLINE auto forwardKinematics(ns::Body, const Inputs & x, std::size_t i)
+{
+  return ns::forward_kinematics<double>(x.q[i]);
+}
+RBDGEN_NOINLINE auto kinematics(ns::Body, const Inputs & x, std::size_t i) { return ns::kinematics<double>(x.q[i]); }
+RBDGEN_NOINLINE auto jacobianKin(ns::Body b, const Inputs & x, std::size_t i)
+{
+  return ns::jacobian<double>(b, x.kin[i]);
+}
+RBDGEN_NOINLINE auto jacobianQ(ns::Body b, const Inputs & x, std::size_t i) { return ns::jacobian<double>(b, x.q[i]); }
 // jacobian_dot_times_alpha from q is newer than some before headers (then left out)
 template<class T, class = void>
 struct HasJdotFromQ : std::false_type
 {
 };
 template<class T>
-struct HasJdotFromQ<T, std::void_t<decltype(ns::jacobian_dot_times_alpha<T>(ns::Body{}, std::declval<const ns::Config<T> &>(),
-                                                                             std::declval<const ns::Tangent<T> &>()))>>
+struct HasJdotFromQ<T, std::void_t<decltype(ns::jacobian_dot_times_alpha<T>(
+                          ns::Body{}, std::declval<const ns::Config<T> &>(), std::declval<const ns::Tangent<T> &>()))>>
 : std::true_type
 {
 };
 template<class T = double>
-RBDGEN_NOINLINE auto jdotQ(ns::Body b, const Inputs & x)
+RBDGEN_NOINLINE auto jdotQ(ns::Body b, const Inputs & x, std::size_t i)
 {
-  return ns::jacobian_dot_times_alpha<T>(b, x.q, x.alpha);
+  return ns::jacobian_dot_times_alpha<T>(b, x.q[i], x.alpha[i]);
 }
-RBDGEN_NOINLINE auto comQ(ns::Body, const Inputs & x) { return ns::center_of_mass<double>(x.q); }
-RBDGEN_NOINLINE auto comJacobianKin(ns::Body, const Inputs & x) { return ns::com_jacobian<double>(x.kin); }
-RBDGEN_NOINLINE auto momentumMatrix(ns::Body, const Inputs & x) { return ns::centroidal_momentum_matrix<double>(x.q); }
-RBDGEN_NOINLINE auto inverseDynamics(ns::Body, const Inputs & x) { return ns::inverse_dynamics<double>(x.q, x.alpha, x.alphaD); }
-RBDGEN_NOINLINE auto inverseDynamicsFext(ns::Body, const Inputs & x)
+RBDGEN_NOINLINE auto comQ(ns::Body, const Inputs & x, std::size_t i) { return ns::center_of_mass<double>(x.q[i]); }
+RBDGEN_NOINLINE auto comJacobianKin(ns::Body, const Inputs & x, std::size_t i)
 {
-  return ns::inverse_dynamics<double>(x.q, x.alpha, x.alphaD, x.fext);
+  return ns::com_jacobian<double>(x.kin[i]);
 }
-RBDGEN_NOINLINE auto forwardDynamics(ns::Body, const Inputs & x) { return ns::forward_dynamics<double>(x.q, x.alpha, x.alphaD); }
-RBDGEN_NOINLINE auto massMatrix(ns::Body, const Inputs & x) { return ns::mass_matrix<double>(x.q); }
+RBDGEN_NOINLINE auto momentumMatrix(ns::Body, const Inputs & x, std::size_t i)
+{
+  return ns::centroidal_momentum_matrix<double>(x.q[i]);
+}
+RBDGEN_NOINLINE auto inverseDynamics(ns::Body, const Inputs & x, std::size_t i)
+{
+  return ns::inverse_dynamics<double>(x.q[i], x.alpha[i], x.alphaD[i]);
+}
+RBDGEN_NOINLINE auto inverseDynamicsFext(ns::Body, const Inputs & x, std::size_t i)
+{
+  return ns::inverse_dynamics<double>(x.q[i], x.alpha[i], x.alphaD[i], x.fext[i]);
+}
+RBDGEN_NOINLINE auto forwardDynamics(ns::Body, const Inputs & x, std::size_t i)
+{
+  return ns::forward_dynamics<double>(x.q[i], x.alpha[i], x.alphaD[i]);
+}
+RBDGEN_NOINLINE auto massMatrix(ns::Body, const Inputs & x, std::size_t i) { return ns::mass_matrix<double>(x.q[i]); }
 
 template<auto F>
 FunctionCase function(const char * name, bool link)

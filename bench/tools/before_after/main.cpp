@@ -148,8 +148,8 @@ int main(int argc, char ** argv)
           ta.push_back(fa.time(ba, s, iters));
         }
         const double mb = median(tb), ma = median(ta);
-        std::printf("| %s | %s | %s | %.1f | %.1f | %.2f× | %.1e |\n", robot.c_str(), fa.name.c_str(), link.c_str(), mb, ma,
-                    mb / ma, diff);
+        std::printf("| %s | %s | %s | %.1f | %.1f | %.2f× | %.1e |\n", robot.c_str(), fa.name.c_str(), link.c_str(),
+                    mb, ma, mb / ma, diff);
         std::fflush(stdout);
       }
     }

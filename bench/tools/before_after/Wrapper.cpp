@@ -145,6 +145,11 @@ RBDGEN_NOINLINE auto inverseDynamicsFext(ns::Body, const Inputs & x, std::size_t
 {
   return ns::inverse_dynamics<double>(x.q[i], x.alpha[i], x.alphaD[i], x.fext[i]);
 }
+RBDGEN_NOINLINE auto nonlinearEffects(ns::Body, const Inputs & x, std::size_t i)
+{
+  return ns::nonlinear_effects<double>(x.q[i], x.alpha[i]);
+}
+RBDGEN_NOINLINE auto gravityTorques(ns::Body, const Inputs & x, std::size_t i) { return ns::gravity_torques<double>(x.q[i]); }
 RBDGEN_NOINLINE auto forwardDynamics(ns::Body, const Inputs & x, std::size_t i)
 {
   return ns::forward_dynamics<double>(x.q[i], x.alpha[i], x.alphaD[i]);
@@ -183,6 +188,8 @@ const bool registered = [] {
                             function<momentumMatrix>("centroidal_momentum_matrix(q)", false),
                             function<inverseDynamics>("inverse_dynamics(q, alpha, alphaD)", false),
                             function<inverseDynamicsFext>("inverse_dynamics(q, alpha, alphaD, fext)", false),
+                            function<nonlinearEffects>("nonlinear_effects(q, alpha)", false),
+                            function<gravityTorques>("gravity_torques(q)", false),
                             function<forwardDynamics>("forward_dynamics(q, alpha, tau)", false),
                             function<massMatrix>("mass_matrix(q)", false)}});
   auto & functions = headerCases().back().functions;

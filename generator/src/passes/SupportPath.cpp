@@ -52,27 +52,14 @@ Xform poseVars(const std::string & E, const std::string & o)
 }
 
 // E = X.E, o = X.r for mutable E, o that X may read: entries that are other entries of E or o are
-// copied first (the assignments run in order), entries already in place are skipped: those that
-// read as the pose named fromE, fromO (E itself, or the pose they were initialised from), and the
+// copied first (the assignments run in order); entries already in place are skipped, and so are the
 // constants of the identity when E, o hold it (a walk's first step).
-void assignPose(Block & b, const std::string & E, const std::string & o, const Xform & X, bool fromIdentity,
-                std::string fromE = "", std::string fromO = "")
+void assignPose(Block & b, const std::string & E, const std::string & o, const Xform & X, bool fromIdentity)
 {
-  if(fromE.empty()) fromE = E;
-  if(fromO.empty()) fromO = o;
   std::vector<std::pair<std::string, Scalar>> moves;
-  std::vector<std::string> current;
   for(int r = 0; r < 3; ++r)
-    for(int c = 0; c < 3; ++c)
-    {
-      moves.emplace_back(fmt::format("{}({}, {})", E, r, c), X.E(r, c));
-      current.push_back(fmt::format("{}({}, {})", fromE, r, c));
-    }
-  for(int i = 0; i < 3; ++i)
-  {
-    moves.emplace_back(fmt::format("{}({})", o, i), X.r[i]);
-    current.push_back(fmt::format("{}({})", fromO, i));
-  }
+    for(int c = 0; c < 3; ++c) moves.emplace_back(fmt::format("{}({}, {})", E, r, c), X.E(r, c));
+  for(int i = 0; i < 3; ++i) moves.emplace_back(fmt::format("{}({})", o, i), X.r[i]);
   auto readsTarget = [&](const Scalar & x) {
     return !x.isConst() && (x.name().rfind(E + "(", 0) == 0 || x.name().rfind(o + "(", 0) == 0);
   };
@@ -83,7 +70,7 @@ void assignPose(Block & b, const std::string & E, const std::string & o, const X
     const auto & [dst, x] = moves[m];
     const double identity = m < 9 && m % 4 == 0 ? 1.0 : 0.0; // (E(r, r) are entries 0, 4 and 8)
     if(x.isConst() && fromIdentity && x.value() == identity) continue;
-    if(x.isConst() || (x.name() != dst && x.name() != current[m])) b.line(fmt::format("{} = {};", dst, Block::text(x)));
+    if(x.isConst() || x.name() != dst) b.line(fmt::format("{} = {};", dst, Block::text(x)));
   }
 }
 

@@ -19,8 +19,9 @@ struct FunctionCase
   void (*eval)(int body, const State & s, std::vector<double> & out) = nullptr;
   /// ns per call over `iters` calls cycling through the states; every call's result is read (a
   /// checksum), the state changes every call, the call is not inlined into the loop. Inputs a
-  /// function takes precomputed (Kinematics) are computed before the clock starts.
-  double (*time)(int body, const std::vector<State> & states, int iters) = nullptr;
+  /// function takes precomputed (Kinematics) are computed before the clock starts; `shift` (the
+  /// run's index) places the stack frames and the inputs differently in each run.
+  double (*time)(int body, const std::vector<State> & states, int iters, int shift) = nullptr;
 };
 
 struct HeaderCase

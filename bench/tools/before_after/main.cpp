@@ -138,14 +138,15 @@ int main(int argc, char ** argv)
           std::fprintf(stderr, "before_after: %s %s disagrees: %.1e\n", robot.c_str(), fa.name.c_str(), diff);
           status = 1;
         }
-        // about 20 ms a run, 9 alternating runs each, the median of each
-        const double estimate = std::max(fa.time(ba, s, 2000), 1.0);
+        // about 20 ms a run, 9 alternating runs each (run r places the data as Wrapper.cpp's time says),
+        // the median of each
+        const double estimate = std::max(fa.time(ba, s, 2000, 0), 1.0);
         const int iters = static_cast<int>(std::max(2000.0, 2e7 / estimate));
         std::vector<double> tb, ta;
         for(int r = 0; r < 9; ++r)
         {
-          tb.push_back(fb->time(bb, s, iters));
-          ta.push_back(fa.time(ba, s, iters));
+          tb.push_back(fb->time(bb, s, iters, r));
+          ta.push_back(fa.time(ba, s, iters, r));
         }
         const double mb = median(tb), ma = median(ta);
         std::printf("| %s | %s | %s | %.1f | %.1f | %.2f× | %.1e |\n", robot.c_str(), fa.name.c_str(), link.c_str(),

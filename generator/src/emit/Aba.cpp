@@ -22,13 +22,14 @@ EmittedBody abaBody(const RobotModel & rm)
   std::vector<ABI> IA(n);
   // Pass 1: v = X v_p + S alpha (forward motion pass), pA = v x* I v (inertial forces at a = 0),
   // c = v x S alpha, IA = I.
-  const MotionState m = forwardMotion(ctx, MotionRequest::make(false, true, false), ctx.allJoints());
-  std::vector<Force> pA = inertialForces(ctx, m, true, ctx.allJoints());
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    c[k] = velocityProduct(ctx, m, static_cast<int>(k), rm.joints[k].tag + "_c");
-    IA[k] = fromRigid(bodyInertia(rm.joints[k]));
-  }
+  // (each joint's pA and c right after its velocity: fewer values live at once)
+  std::vector<Force> pA(n);
+  forwardMotion(ctx, MotionRequest::make(false, true, false), ctx.allJoints(), [&](int k, const MotionState & m) {
+    const auto kk = static_cast<std::size_t>(k);
+    pA[kk] = inertialForce(ctx, m, true, k);
+    c[kk] = velocityProduct(ctx, m, k, rm.joints[kk].tag + "_c");
+    IA[kk] = fromRigid(bodyInertia(rm.joints[kk]));
+  });
   // Pass 2 (leaves to root): U = IA S, D = S^T U, u = tau - S^T pA,
   // Ia = IA - U D^-1 U^T, pa = pA + Ia c + U D^-1 u; IA_p += X^T Ia X, pA_p += X^T pa.
   std::vector<std::vector<Force>> U(n);

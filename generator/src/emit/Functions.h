@@ -46,7 +46,8 @@ struct RneaTerms
   bool gravity = true;
   Eigen::Vector3d gravityVector = Eigen::Vector3d(0, 0, -9.81); ///< world, m/s^2 (used when `gravity`)
 };
-/// Reads q (+ alpha, alphaD per terms); fills `tau`.
+/// Reads q (+ alpha, alphaD per terms); fills `tau`. On a large tree (SharedPasses::largeTree) it
+/// computes everything in place (no shared pass called).
 EmittedBody rneaBody(const RobotModel & rm, const RneaTerms & terms);
 /// The body of detail::inverse_dynamics_from: inverse dynamics under gravity from the header's
 /// shared kernels `K` (a parameter), alpha and alphaD; fills `tau`.

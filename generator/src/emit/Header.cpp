@@ -158,11 +158,24 @@ void robotApiSections(HeaderSections & h, const RobotModel & rm, const FdChoice 
   v["fn_inverse_dynamics_from"] = inverseDynamicsFromKernelsBody(rm).text;
   v["fn_inverse_dynamics_fext"] = inverseDynamicsWrenchesBody(rm).text;
   v["gravity_magnitude"] = gravityLiteral();
-  // velocity_torques: the shared RNEA at alphaD = 0 and g = 0 (one RNEA fewer in the header; as
-  // nonlinear_effects it runs 5 % slower than its own RNEA: zeros multiplied by joint rotations do
-  // not fold in IEEE arithmetic, so nonlinear_effects keeps its own)
-  v["fn_velocity_torques"] =
-      "  detail::inverse_dynamics_from<S>(detail::joint_kernels<S>(q), alpha, Tangent<S>::Zero(), S(0), tau);\n";
+  // inverse_dynamics and velocity_torques: the shared RNEA (g = 9.81; alphaD = 0 and g = 0), one RNEA
+  // fewer each in the header, as fast on small trees (velocity_torques ~5 % slower, as
+  // nonlinear_effects would be: zeros multiplied by joint rotations do not fold in IEEE arithmetic).
+  // Large trees get their own bodies, which compute each joint's kernel where it is first used:
+  // the shared kernels, computed first and live through the whole RNEA, spill (talos_reduced + free
+  // base, g++: 1,383 stack operands in inverse_dynamics against 1,040 in place).
+  if(!passes::SharedPasses::largeTree(rm))
+  {
+    v["fn_inverse_dynamics"] = fmt::format(
+        "  detail::inverse_dynamics_from<S>(detail::joint_kernels<S>(q), alpha, alphaD, {}, tau);\n", gravityLiteral());
+    v["fn_velocity_torques"] =
+        "  detail::inverse_dynamics_from<S>(detail::joint_kernels<S>(q), alpha, Tangent<S>::Zero(), S(0), tau);\n";
+  }
+  else
+  {
+    v["fn_inverse_dynamics"] = rneaBody(rm, {true, true, true, RneaTerms{}.gravityVector}).text;
+    v["fn_velocity_torques"] = rneaBody(rm, {true, false, false, RneaTerms{}.gravityVector}).text;
+  }
   if(fd)
   {
     FdOptions crbaOptions;

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "../passes/BackwardForce.h"
+#include "../passes/SharedPasses.h"
 #include "Functions.h"
 #include "Outputs.h"
 
@@ -24,8 +25,11 @@ void emitRnea(PassContext & ctx, const RneaTerms & terms, const std::string & gr
   req.alphaD = terms.acceleration;
   if(terms.gravity) req.gravity = terms.gravityVector;
   req.gravityParameter = gravityParameter;
-  const MotionState m = forwardMotion(ctx, req, ctx.allJoints());
-  std::vector<Force> f = inertialForces(ctx, m, terms.velocity, ctx.allJoints());
+  // each joint's inertial force right after its motion (fewer values live at once)
+  std::vector<Force> f(ctx.model().joints.size(), Force::zero());
+  forwardMotion(ctx, req, ctx.allJoints(), [&](int k, const MotionState & m) {
+    f[static_cast<std::size_t>(k)] = inertialForce(ctx, m, terms.velocity, k);
+  });
   backwardForces(ctx, f, writeTorques(ctx, "tau"));
 }
 
@@ -35,6 +39,9 @@ EmittedBody rneaBody(const RobotModel & rm, const RneaTerms & terms)
 {
   Block b;
   PassContext ctx(b, rm);
+  // On a large tree the shared kernels, computed first and live through both passes, spill: each
+  // joint's kernel is emitted at its first use instead (SharedPasses::largeTree).
+  if(SharedPasses::largeTree(rm)) ctx.emitInPlace();
   emitRnea(ctx, terms);
   return finish(b);
 }

@@ -70,8 +70,11 @@ EmittedBody sceneRneaBody(const RobotModel & rm, const SceneEffects & fx, bool w
   req.alphaD = withAlphaD;
   req.velocityProducts = fx.velocityTerms;
   req.gravity = fx.gravity;
-  const MotionState m = forwardMotion(ctx, req, ctx.allJoints());
-  std::vector<Force> f = inertialForces(ctx, m, fx.velocityTerms, ctx.allJoints());
+  // each joint's inertial force right after its motion (fewer values live at once)
+  std::vector<Force> f(rm.joints.size(), Force::zero());
+  const MotionState m = forwardMotion(ctx, req, ctx.allJoints(), [&](int k, const MotionState & mk) {
+    f[static_cast<std::size_t>(k)] = inertialForce(ctx, mk, fx.velocityTerms, k);
+  });
   for(std::size_t w = 0; w < fx.wrenchBodies.size(); ++w)
   {
     const int body = fx.wrenchBodies[w];

@@ -28,27 +28,28 @@ Inertia bodyInertia(const MovingJoint & mj)
   return o;
 }
 
+Force inertialForce(PassContext & ctx, const MotionState & m, bool velocityProducts, int k)
+{
+  Block & b = ctx.block();
+  const auto kk = static_cast<std::size_t>(k);
+  const MovingJoint & mj = ctx.joint(k);
+  const std::string & t = mj.tag;
+  const Inertia I = bodyInertia(mj);
+  b.comment(fmt::format("{}: f = I a{}", t, velocityProducts ? " + v x* I v" : ""));
+  const Force Ia = apply(b, I, m.a[kk], t + "_Ia");
+  if(!velocityProducts) return Ia;
+  // v x* I v from the header's shared velocity products when m's velocities are the shared ones
+  if(m.sharedVelocities) ctx.callOnce("[[maybe_unused]] const auto VPs = detail::velocity_products<S>(Vs);");
+  const Force p = m.sharedVelocities ? ctx.shared()->velocityProducts().p[kk]
+                                     : crossDual(b, m.v[kk], apply(b, I, m.v[kk], t + "_Iv"), t + "_vxIv");
+  return add(b, Ia, p, t + "_f");
+}
+
 std::vector<Force> inertialForces(PassContext & ctx, const MotionState & m, bool velocityProducts,
                                   const std::vector<int> & joints)
 {
-  Block & b = ctx.block();
   std::vector<Force> f(ctx.model().joints.size(), Force::zero());
-  // v x* I v from the header's shared velocity products when m's velocities are the shared ones
-  const bool shared = velocityProducts && joints.size() == ctx.model().joints.size() && m.sharedVelocities;
-  if(shared) ctx.callOnce("[[maybe_unused]] const auto VPs = detail::velocity_products<S>(Vs);");
-  for(int k : joints)
-  {
-    const auto kk = static_cast<std::size_t>(k);
-    const MovingJoint & mj = ctx.joint(k);
-    const std::string & t = mj.tag;
-    const Inertia I = bodyInertia(mj);
-    b.comment(fmt::format("{}: f = I a{}", t, velocityProducts ? " + v x* I v" : ""));
-    f[kk] = apply(b, I, m.a[kk], t + "_Ia");
-    if(!velocityProducts) continue;
-    const Force p = shared ? ctx.shared()->velocityProducts().p[kk]
-                           : crossDual(b, m.v[kk], apply(b, I, m.v[kk], t + "_Iv"), t + "_vxIv");
-    f[kk] = add(b, f[kk], p, t + "_f");
-  }
+  for(int k : joints) f[static_cast<std::size_t>(k)] = inertialForce(ctx, m, velocityProducts, k);
   return f;
 }
 

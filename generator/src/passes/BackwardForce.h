@@ -20,7 +20,9 @@ Inertia bodyInertia(const MovingJoint & mj);
 /// The rotational inertia bodyInertia uses: (I + I^T) / 2 of the body's inertia at its origin.
 Eigen::Matrix3d symmetricInertia(const MovingJoint & mj);
 
-/// f_k = I_k a_k (+ v_k x* I_k v_k when velocityProducts) for every joint in `joints`, zero elsewhere.
+/// f_k = I_k a_k (+ v_k x* I_k v_k when velocityProducts) of joint k (m holds k's quantities).
+Force inertialForce(PassContext & ctx, const MotionState & m, bool velocityProducts, int k);
+/// inertialForce for every joint in `joints`, zero elsewhere.
 std::vector<Force> inertialForces(PassContext & ctx, const MotionState & m, bool velocityProducts,
                                   const std::vector<int> & joints);
 

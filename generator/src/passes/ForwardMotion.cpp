@@ -5,21 +5,24 @@
 namespace rbdgen::passes
 {
 
-MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const std::vector<int> & joints)
+MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const std::vector<int> & joints,
+                          const std::function<void(int k, const MotionState & m)> & afterJoint)
 {
   Block & b = ctx.block();
   const std::size_t n = ctx.model().joints.size();
   MotionState m{std::vector<Xform>(n, Xform::identity()), std::vector<Motion>(n, Motion::zero()),
                 std::vector<Motion>(n, Motion::zero()), std::vector<Motion>(n, Motion::zero())};
-  // Over every joint, poses and velocities come from the header's shared passes when it has them.
+  // Over every joint, poses and velocities come from the header's shared passes when it has them
+  // (velocities only on small trees: see SharedPasses::largeTree).
   SharedPasses * shared = joints.size() == n && n > 0 ? ctx.shared() : nullptr;
+  const bool sharedVelocities = shared && !SharedPasses::largeTree(ctx.model());
   if(shared && req.poses)
   {
     ctx.kernel(0); // declares K
     ctx.callOnce(SharedPasses::posesCall());
     m.X0 = shared->poses();
   }
-  if(shared && req.velocity)
+  if(sharedVelocities && req.velocity)
   {
     ctx.kernel(0);
     ctx.callOnce("[[maybe_unused]] const auto Vs = detail::joint_velocities<S>(K, alpha);");
@@ -49,7 +52,7 @@ MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const st
       const Xform Xt = treeXform(mj);
       m.X0[kk] = compose(b, K.Xj, root ? Xt : compose(b, Xt, m.X0[p], t + "_X0t"), t + "_X0");
     }
-    if(req.velocity && !shared)
+    if(req.velocity && !sharedVelocities)
     {
       m.vJ[kk] = jointMotion(b, K, "alpha", mj.vIndex, t + "_vJ");
       m.v[kk] = add(b, toChild(b, mj, K, root ? Motion::zero() : m.v[p], t + "_Xv"), m.vJ[kk], t + "_v");
@@ -60,6 +63,7 @@ MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const st
       m.a[kk] = add(b, toChild(b, mj, K, root ? a0 : m.a[p], t + "_Xa"), aJ, t + "_aa");
       if(req.velocity && req.velocityProducts) m.a[kk] = add(b, m.a[kk], velocityProduct(ctx, m, k, t + "_vxvJ"), t + "_a");
     }
+    if(afterJoint) afterJoint(k, m);
   }
   return m;
 }

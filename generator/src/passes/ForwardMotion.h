@@ -7,6 +7,7 @@
 // (RBDyn: gravity enters as a fictitious upward acceleration of the world). Inputs that a request
 // leaves out are zero, and the constant folding of codegen/ removes every term they touch.
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -48,7 +49,11 @@ struct MotionState
 };
 
 /// Run the pass over `joints` (ascending, closed under parents; e.g. ctx.allJoints() or a support path).
-MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const std::vector<int> & joints);
+/// afterJoint(k, m), when given, runs right after joint k's quantities are emitted (m holds them and
+/// its ancestors'): a pass that consumes them joint by joint (RNEA's inertial forces) emits its
+/// statements next to the ones they read, which keeps few values live at once in the compiled code.
+MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const std::vector<int> & joints,
+                          const std::function<void(int k, const MotionState & m)> & afterJoint = {});
 
 /// c_k = v_k x vJ_k of joint k: read from the shared velocity products when m's velocities are the
 /// shared ones (declaring `VPs` in the body once), else emitted.

@@ -40,6 +40,8 @@ public:
   /// The body receives the shared kernels as a parameter `K` (a detail function of the header):
   /// the call of detail::joint_kernels is not emitted.
   void kernelsFromCaller();
+  /// This body emits every pass in place (no shared pass called; kernels at their first use).
+  void emitInPlace() { shared_ = nullptr; }
   /// The body receives what `line` (a call of a shared pass) declares as a parameter: not emitted.
   void fromCaller(const std::string & line);
 

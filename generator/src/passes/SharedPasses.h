@@ -6,6 +6,7 @@
 // constant entries still fold at generation time (a struct holds no constant), so the emitted
 // arithmetic is the same as when every function repeated the pass.
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -29,6 +30,16 @@ class SharedPasses
 {
 public:
   explicit SharedPasses(const RobotModel & rm);
+
+  /// A large tree (more moving joints than kMaxSmallTree) shares no velocities (nor their
+  /// products), and its RNEA bodies call no shared pass at all. There the shared structs — every
+  /// joint's kernel, v, vJ, v x vJ, v x* I v, computed first — are more live values than the
+  /// registers hold, and RNEA, which reads them joint by joint in two passes, spills: on
+  /// talos_reduced + free base (33 joints, g++ -O3) inverse_dynamics had 2,456 stack operands and
+  /// ran ~1.5x slower than when each function emitted its own passes; in place, 1,040. ur5 and
+  /// solo12 (13 joints) are as fast or faster shared, and their headers smaller.
+  static constexpr std::size_t kMaxSmallTree = 16;
+  static bool largeTree(const RobotModel & rm) { return rm.joints.size() > kMaxSmallTree; }
 
   /// Kernels of every joint, entries read from `K` (`const auto K = detail::joint_kernels<S>(q);`).
   const std::vector<JointKernel> & kernels();

@@ -2,7 +2,9 @@
 // every joint angle in one call, against std::sin/std::cos in long double: random angles, the
 // quadrant boundaries k pi/4 where the reduction switches polynomial and sign, the ends of the
 // exact reduction (where the kernel hands over to std::sin/cos), signed zeros, inf and NaN, and
-// the batch sizes that exercise the vectorised loop's remainders (1, 6, 7, 13, 40).
+// the batch sizes that exercise the vectorised loop's remainders (1, 6, 7, 13, 40). Built twice: with
+// the build's flags (detail::sincos_loop), and as test_sincos_avx2 with -mavx2 -mfma (with clang++,
+// detail::sincos_vectors: the same operations on vector types; with g++, the loop fused).
 #include <ur5e/dynamics.hpp>
 
 #include <gtest/gtest.h>
@@ -96,6 +98,14 @@ std::vector<S> testAngles()
 template<class S>
 class SinCosAll : public ::testing::Test
 {
+protected:
+  void SetUp() override
+  {
+#if defined(__AVX2__)
+    // test_sincos_avx2 (built with -mavx2 -mfma: clang++ runs detail::sincos_vectors)
+    if(!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) GTEST_SKIP() << "this CPU has no AVX2 + FMA";
+#endif
+  }
 };
 using Scalars = ::testing::Types<double, float>;
 TYPED_TEST_SUITE(SinCosAll, Scalars, );

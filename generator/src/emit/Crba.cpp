@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "../passes/CompositeInertia.h"
+#include "../passes/SharedPasses.h"
 #include "Functions.h"
 #include "Template.h"
 
@@ -15,39 +16,44 @@ using namespace rbdgen::passes;
 namespace
 {
 
-// Composite rigid-body algorithm on symbols: H (lower triangle, by dof index) from kernels.
-std::vector<std::vector<Scalar>> emitCrba(PassContext & ctx)
+// Composite rigid-body algorithm on symbols: H (lower triangle, by dof index) from kernels. Joint k's
+// columns come right after its composite inertia is complete (leaves first; on a large tree, whose
+// body computes the composite inertias in place, next to them); entry(r, c, H_rc) runs as each
+// entry of the lower triangle (r >= c) is emitted.
+std::vector<std::vector<Scalar>> emitCrba(PassContext & ctx, const std::function<void(int r, int c, Scalar & x)> & entry)
 {
   Block & b = ctx.block();
   const RobotModel & rm = ctx.model();
-  const std::size_t n = rm.joints.size();
-  const std::vector<Inertia> Ic = compositeInertias(ctx);
   std::vector<std::vector<Scalar>> H(static_cast<std::size_t>(rm.nv),
                                      std::vector<Scalar>(static_cast<std::size_t>(rm.nv), Scalar::constant(0)));
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    const MovingJoint & mj = rm.joints[k];
+  const auto put = [&](int r, int c, const Scalar & x) {
+    Scalar & h = H[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
+    h = x;
+    entry(r, c, h);
+  };
+  compositeInertias(ctx, [&](int k, const Inertia & Ic) {
+    const MovingJoint & mj = ctx.joint(k);
     b.comment(fmt::format("{}: mass matrix columns, F = Ic S carried to the root", mj.tag));
     for(int d = 0; d < mj.nv; ++d)
     {
       const std::string h = fmt::format("{}_F{}", mj.tag, d);
-      Force F = apply(b, Ic[k], ctx.kernel(static_cast<int>(k)).S[static_cast<std::size_t>(d)], h);
+      Force F = apply(b, Ic, ctx.kernel(k).S[static_cast<std::size_t>(d)], h);
       const int col = mj.vIndex + d;
       // H_kk block (lower part: rows >= col)
-      const auto own = projectForce(b, ctx.kernel(static_cast<int>(k)), F, fmt::format("H_{}", col));
-      for(int e = d; e < mj.nv; ++e) H[static_cast<std::size_t>(mj.vIndex + e)][static_cast<std::size_t>(col)] = own[static_cast<std::size_t>(e)];
-      int j = static_cast<int>(k);
-      while(rm.joints[static_cast<std::size_t>(j)].parent >= 0)
+      const auto own = projectForce(b, ctx.kernel(k), F, fmt::format("H_{}", col));
+      for(int e = d; e < mj.nv; ++e) put(mj.vIndex + e, col, own[static_cast<std::size_t>(e)]);
+      int j = k;
+      while(ctx.joint(j).parent >= 0)
       {
-        const MovingJoint & mjj = rm.joints[static_cast<std::size_t>(j)];
+        const MovingJoint & mjj = ctx.joint(j);
         F = toParent(b, mjj, ctx.kernel(j), F, fmt::format("{}_{}", h, mjj.tag));
         j = mjj.parent;
-        const MovingJoint & mp = rm.joints[static_cast<std::size_t>(j)];
+        const MovingJoint & mp = ctx.joint(j);
         const auto Hp = projectForce(b, ctx.kernel(j), F, fmt::format("H_{}", col));
-        for(int e = 0; e < mp.nv; ++e) H[static_cast<std::size_t>(col)][static_cast<std::size_t>(mp.vIndex + e)] = Hp[static_cast<std::size_t>(e)];
+        for(int e = 0; e < mp.nv; ++e) put(col, mp.vIndex + e, Hp[static_cast<std::size_t>(e)]);
       }
     }
-  }
+  });
   return H;
 }
 
@@ -66,17 +72,20 @@ std::vector<int> dofParents(const RobotModel & rm)
   return lambda;
 }
 
-std::vector<std::vector<Scalar>> emitMassMatrix(Block & b, const RobotModel & rm, const std::vector<double> & armature)
+std::vector<std::vector<Scalar>> emitMassMatrix(Block & b, const RobotModel & rm, const std::vector<double> & armature,
+                                                const std::function<void(int r, int c, const Scalar & x)> & entry)
 {
   PassContext ctx(b, rm);
-  const auto Hfull = emitCrba(ctx);
-  const auto nv = static_cast<std::size_t>(rm.nv);
-  // Symmetric view: L[r][c] for c <= r; H_ii += armature_i.
-  std::vector<std::vector<Scalar>> L(nv, std::vector<Scalar>(nv, Scalar::constant(0)));
-  for(std::size_t r = 0; r < nv; ++r)
-    for(std::size_t c = 0; c <= r; ++c) L[r][c] = Hfull[r][c].isZero() ? Hfull[c][r] : Hfull[r][c];
-  for(std::size_t i = 0; i < armature.size() && i < nv; ++i)
-    if(armature[i] != 0.0) L[i][i] = b.sum({Term{1.0, {L[i][i]}}, Term{armature[i], {}}}, fmt::format("Ha{}", i));
+  // A large tree's composite inertias are too many live values to read from the shared struct
+  // after the pass: computed in place, each next to the columns that read it.
+  if(SharedPasses::largeTree(rm)) ctx.emitInPlace();
+  // Symmetric view L[r][c], c <= r (every entry emitCrba sets is in the lower triangle); H_ii += armature_i.
+  auto L = emitCrba(ctx, [&](int r, int c, Scalar & x) {
+    const auto i = static_cast<std::size_t>(r);
+    if(r == c && i < armature.size() && armature[i] != 0.0)
+      x = b.sum({Term{1.0, {x}}, Term{armature[i], {}}}, fmt::format("Ha{}", i));
+    if(entry) entry(r, c, x);
+  });
   return L;
 }
 
@@ -126,15 +135,16 @@ std::vector<Scalar> emitLtdlSolve(Block & b, const Ltdl & f, std::vector<Scalar>
 MassMatrixLower massMatrixLowerBody(const RobotModel & rm, const std::vector<double> & armature)
 {
   Block b;
-  const auto L = emitMassMatrix(b, rm, armature);
+  // put(r, c, H_rc) as soon as the entry is computed: its value is not kept live to the end
+  const auto L = emitMassMatrix(b, rm, armature, [&b](int r, int c, const Scalar & x) {
+    if(!x.isZero()) b.line(fmt::format("put({}, {}, {});", r, c, Block::text(x)));
+  });
   MassMatrixLower out;
   std::vector<std::vector<int>> slot(static_cast<std::size_t>(rm.nv), std::vector<int>(static_cast<std::size_t>(rm.nv), -1));
   for(int r = 0; r < rm.nv; ++r)
     for(int c = 0; c <= r; ++c)
     {
-      const Scalar & x = L[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
-      if(x.isZero()) continue;
-      b.line(fmt::format("put({}, {}, {});", r, c, Block::text(x)));
+      if(L[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].isZero()) continue;
       slot[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = slot[static_cast<std::size_t>(c)][static_cast<std::size_t>(r)] = out.nnz++;
     }
   out.body = finish(b);

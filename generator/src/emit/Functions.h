@@ -2,6 +2,7 @@
 // Bodies of the emitted functions. Each returns the statements of one function body (indented),
 // written from the robot model with every recursion unrolled.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -61,7 +62,7 @@ EmittedBody inverseDynamicsWrenchesBody(const RobotModel & rm);
 
 /// The mass matrix H (composite rigid-body algorithm, plus diag(armature) when given, per dof) as
 /// the body of `detail::mass_matrix_lower(q, put)`: reads q, calls put(r, c, H(r, c)) for every
-/// entry of the lower triangle (r >= c) that is not structurally zero, row by row; nnz: their count;
+/// entry of the lower triangle (r >= c) that is not structurally zero, as soon as it is computed; nnz: their count;
 /// slots: the initialiser lines of detail::mass_matrix_slot (nv x nv, row-major: the call index of
 /// H(r, c) = H(c, r), -1 for a structural zero); entries: the initialiser of mass_matrix_entries ({row, col}
 /// per call, a line per row of H).
@@ -90,8 +91,10 @@ struct FdOptions
 /// Reads q, alpha, tau; fills `alphaD` from (H + diag(armature)) alphaD = tau - C (H by CRBA, C by
 /// `biasCall`, tree-sparse L^T D L factorisation).
 EmittedBody forwardDynamicsBody(const RobotModel & rm, const FdOptions & opt = {});
-/// Lower triangle of H + diag(armature) (CRBA) as symbols, H[r][c] for c <= r.
-std::vector<std::vector<cg::Scalar>> emitMassMatrix(cg::Block & b, const RobotModel & rm, const std::vector<double> & armature);
+/// Lower triangle of H + diag(armature) (CRBA) as symbols, H[r][c] for c <= r; entry(r, c, H_rc), when
+/// given, runs as each entry is emitted (leaves' columns first), e.g. to store it at once.
+std::vector<std::vector<cg::Scalar>> emitMassMatrix(cg::Block & b, const RobotModel & rm, const std::vector<double> & armature,
+                                                    const std::function<void(int r, int c, const cg::Scalar & x)> & entry = {});
 /// Parent of each dof in the dof tree (Featherstone's λ on dofs), -1 for a root dof.
 std::vector<int> dofParents(const RobotModel & rm);
 /// H = L^T D L, tree-sparse (Featherstone, RBDA 6.5): L[k][i] for i an ancestor dof of k, 1/D.

@@ -158,9 +158,10 @@ void robotApiSections(HeaderSections & h, const RobotModel & rm, const FdChoice 
   v["fn_inverse_dynamics_from"] = inverseDynamicsFromKernelsBody(rm).text;
   v["fn_inverse_dynamics_fext"] = inverseDynamicsWrenchesBody(rm).text;
   v["gravity_magnitude"] = gravityLiteral();
-  // inverse_dynamics and velocity_torques: the shared RNEA (g = 9.81; alphaD = 0 and g = 0), one RNEA
-  // fewer each in the header, as fast on small trees (velocity_torques ~5 % slower, as
-  // nonlinear_effects would be: zeros multiplied by joint rotations do not fold in IEEE arithmetic).
+  // inverse_dynamics, nonlinear_effects and velocity_torques: the shared RNEA (g = 9.81; alphaD = 0;
+  // alphaD = 0 and g = 0), one RNEA fewer each in the header (ur5: 116 lines), as fast on small
+  // trees but for the zero alphaD's additions (a few percent: zeros multiplied by joint rotations
+  // do not fold in IEEE arithmetic).
   // Large trees get their own bodies, which compute each joint's kernel where it is first used:
   // the shared kernels, computed first and live through the whole RNEA, spill (talos_reduced + free
   // base, g++: 1,383 stack operands in inverse_dynamics against 1,040 in place).
@@ -170,6 +171,8 @@ void robotApiSections(HeaderSections & h, const RobotModel & rm, const FdChoice 
         "  detail::inverse_dynamics_from<S>(detail::joint_kernels<S>(q), alpha, alphaD, {}, tau);\n", gravityLiteral());
     v["fn_velocity_torques"] =
         "  detail::inverse_dynamics_from<S>(detail::joint_kernels<S>(q), alpha, Tangent<S>::Zero(), S(0), tau);\n";
+    v["fn_nonlinear_effects"] = fmt::format(
+        "  detail::inverse_dynamics_from<S>(detail::joint_kernels<S>(q), alpha, Tangent<S>::Zero(), {}, tau);\n", gravityLiteral());
   }
   else
   {

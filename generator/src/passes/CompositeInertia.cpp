@@ -8,7 +8,7 @@
 namespace rbdgen::passes
 {
 
-std::vector<Inertia> compositeInertias(PassContext & ctx)
+std::vector<Inertia> compositeInertias(PassContext & ctx, const std::function<void(int k, const Inertia & Ic)> & final)
 {
   Block & b = ctx.block();
   const RobotModel & rm = ctx.model();
@@ -16,12 +16,17 @@ std::vector<Inertia> compositeInertias(PassContext & ctx)
   {
     ctx.kernel(0); // declares K
     ctx.callOnce("[[maybe_unused]] const auto Ics = detail::composite_inertias<S>(K);");
-    return ctx.shared()->compositeInertias();
+    const std::vector<Inertia> & Ic = ctx.shared()->compositeInertias();
+    if(final)
+      for(std::size_t k = rm.joints.size(); k-- > 0;) final(static_cast<int>(k), Ic[k]);
+    return Ic;
   }
   std::vector<Inertia> Ic;
   for(const MovingJoint & mj : rm.joints) Ic.push_back(bodyInertia(mj));
   for(std::size_t k = rm.joints.size(); k-- > 0;)
   {
+    // Ic_k is complete: every child has a larger index
+    if(final) final(static_cast<int>(k), Ic[k]);
     const MovingJoint & mj = rm.joints[k];
     if(mj.parent < 0) continue;
     b.comment(fmt::format("{}: composite inertia into its parent, Ic_p += X_p_i^T Ic_i X_p_i", mj.tag));

@@ -3,6 +3,7 @@
 // (body coordinates), and the first moments of mass (world) that the centre of mass and the
 // momentum functions need:  m_k c_k = m_k o_k + E_0_k^T h_k.
 
+#include <functional>
 #include <vector>
 
 #include "ForwardMotion.h"
@@ -10,8 +11,11 @@
 namespace rbdgen::passes
 {
 
-/// Composite inertia of every moving joint's subtree, in that joint's body frame.
-std::vector<Inertia> compositeInertias(PassContext & ctx);
+/// Composite inertia of every moving joint's subtree, in that joint's body frame. final(k, Ic_k), when
+/// given, runs for every joint, leaves first, as soon as Ic_k is complete (its children added; before
+/// it is added to its parent's): a pass that consumes Ic_k (the mass matrix's columns) emits its
+/// statements next to it, which keeps few composite inertias live at once in the compiled code.
+std::vector<Inertia> compositeInertias(PassContext & ctx, const std::function<void(int k, const Inertia & Ic)> & final = {});
 
 /// First moment m c (world) of joint k's body, from its world pose X0.
 Vec3 firstMoment(PassContext & ctx, int k, const Xform & X0);

@@ -68,10 +68,15 @@ MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const st
   return m;
 }
 
+Motion velocityBias(Block & b, const MovingJoint & mj, const Motion & v, const Motion & vJ, const std::string & hint)
+{
+  return mj.parent < 0 ? Motion::zero() : cross(b, v, vJ, hint);
+}
+
 Motion velocityProduct(PassContext & ctx, const MotionState & m, int k, const std::string & hint)
 {
   const auto kk = static_cast<std::size_t>(k);
-  if(!m.sharedVelocities) return cross(ctx.block(), m.v[kk], m.vJ[kk], hint);
+  if(!m.sharedVelocities) return velocityBias(ctx.block(), ctx.joint(k), m.v[kk], m.vJ[kk], hint);
   ctx.callOnce("[[maybe_unused]] const auto VPs = detail::velocity_products<S>(Vs);");
   return ctx.shared()->velocityProducts().c[kk];
 }

@@ -55,7 +55,11 @@ struct MotionState
 MotionState forwardMotion(PassContext & ctx, const MotionRequest & req, const std::vector<int> & joints,
                           const std::function<void(int k, const MotionState & m)> & afterJoint = {});
 
-/// c_k = v_k x vJ_k of joint k: read from the shared velocity products when m's velocities are the
+/// c_k = v_k x vJ_k of joint k emitted from its velocities; zero at a root joint, whose v_k is vJ_k
+/// (the world does not move), so that nothing downstream multiplies a vJ x vJ the compiler cannot fold.
+Motion velocityBias(Block & b, const MovingJoint & mj, const Motion & v, const Motion & vJ, const std::string & hint);
+
+/// c_k = v_k x vJ_k of joint k (velocityBias): read from the shared velocity products when m's velocities are the
 /// shared ones (declaring `VPs` in the body once), else emitted.
 Motion velocityProduct(PassContext & ctx, const MotionState & m, int k, const std::string & hint);
 

@@ -202,7 +202,7 @@ const VelocityProducts & SharedPasses::velocityProducts()
   {
     const MovingJoint & mj = rm_.joints[k];
     b.comment(fmt::format("{}: c = v x vJ, p = v x* I v", mj.tag));
-    vp.c.push_back(cross(b, v[k], vJ[k], mj.tag + "_vxvJ"));
+    vp.c.push_back(velocityBias(b, mj, v[k], vJ[k], mj.tag + "_vxvJ"));
     vp.p.push_back(crossDual(b, v[k], apply(b, bodyInertia(mj), v[k], mj.tag + "_Iv"), mj.tag + "_vxIv"));
   }
   std::vector<Scalar *> outs;

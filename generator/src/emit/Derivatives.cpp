@@ -180,10 +180,13 @@ void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std:
     }
 }
 
-/// Minv = H^-1 by row operations along the dof tree on the identity, then d alphaD = -Minv dID as
-/// two dense products (Eigen's blocked kernels: for nv = 38 faster than carrying the 2 nv
-/// right-hand sides through the row operations). In the L^T pass and the D scaling, row i has
-/// nonzeros only in the columns of i's subtree [i, end_i]: the operations use that segment.
+/// Minv = H^-1 by row operations along the dof tree on the identity, then d alphaD = -Minv dID. In
+/// the L^T pass and the D scaling, row i has nonzeros only in the columns of i's subtree [i, end_i]:
+/// the operations use that segment. The rows are those of d.Minv's storage read as row-major (M^-1
+/// is symmetric: no copy). dID's column c is zero but in the rows of c's ancestors and subtree (a
+/// torque depends on the q and alpha of the joints on its own paths only), so each column of the
+/// product sums those rows of Minv only (detail::minus_times_tree): talos_reduced + free base
+/// 700 of 1,444 entries.
 void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv)
 {
   std::vector<std::size_t> end(nv);
@@ -193,14 +196,14 @@ void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv)
       end[static_cast<std::size_t>(j)] = std::max(end[static_cast<std::size_t>(j)], end[k]);
   // row `row` of X from column i on, over i's subtree: (length, pointer)
   const auto segment = [&](std::size_t row, std::size_t i) {
-    return std::make_pair(end[i] - i + 1, fmt::format("X.data() + {}", row * nv + i));
+    return std::make_pair(end[i] - i + 1, fmt::format("X + {}", row * nv + i));
   };
   b.comment("Minv = H^-1: row operations along the dof tree on the identity (L^T, D, then L), X row-major");
   // X = 1 as zeros then the diagonal: Identity() fills entry by entry with a test per entry
   // (talos_reduced: 3.9 % of forward_dynamics_derivatives, against 0.3 % more in memset this way)
-  b.line("Eigen::Matrix<S, nv, nv, Eigen::RowMajor> X;");
-  b.line("X.setZero();");
-  b.line("X.diagonal().setOnes();");
+  b.line("d.Minv.setZero();");
+  b.line("d.Minv.diagonal().setOnes();");
+  b.line("S * const X = d.Minv.data();");
   for(std::size_t i = nv; i-- > 0;)
     for(int j = f.lambda[i]; j >= 0; j = f.lambda[static_cast<std::size_t>(j)])
       if(!f.L[i][static_cast<std::size_t>(j)].isZero())
@@ -216,19 +219,18 @@ void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv)
   for(std::size_t i = 0; i < nv; ++i)
     for(int j = f.lambda[i]; j >= 0; j = f.lambda[static_cast<std::size_t>(j)])
       if(!f.L[i][static_cast<std::size_t>(j)].isZero())
-        b.line(fmt::format("detail::row_axpy<nv>(X.data() + {}, {}, X.data() + {});", i * nv, Block::text(f.L[i][static_cast<std::size_t>(j)]),
+        b.line(fmt::format("detail::row_axpy<nv>(X + {}, {}, X + {});", i * nv, Block::text(f.L[i][static_cast<std::size_t>(j)]),
                            static_cast<std::size_t>(j) * nv));
-  // The products go to locals of this function, then to d: written straight into d (the caller's
-  // return slot), their stores 4K-aliased the blocked kernels' loads at some caller stack offsets
-  // (talos_reduced: 23.8-32.5 us over 16 offsets, 22.1-22.7 us with the locals).
-  b.line("const Eigen::Matrix<S, nv, nv> Minv = X;");
-  b.comment("d alphaD = -H^-1 dID at alphaD");
-  b.line("Eigen::Matrix<S, nv, nv> P;");
-  b.line("detail::Lanes<S>::product(P, -Minv, id.dtau_dq);");
-  b.line("d.dalphaD_dq = P;");
-  b.line("detail::Lanes<S>::product(P, -Minv, id.dtau_dalpha);");
-  b.line("d.dalphaD_dalpha = P;");
-  b.line("d.Minv = Minv;");
+  std::string parents, ends;
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    parents += fmt::format("{}{}", i ? ", " : "", f.lambda[i]);
+    ends += fmt::format("{}{}", i ? ", " : "", end[i]);
+  }
+  b.comment("d alphaD = -H^-1 dID at alphaD (dof tree: parent and last dof of the subtree of each dof)");
+  b.line(fmt::format("static constexpr int dof_parent[nv] = {{{}}}, subtree_end[nv] = {{{}}};", parents, ends));
+  b.line("detail::minus_times_tree<S, nv>(d.dalphaD_dq, d.Minv, id.dtau_dq, dof_parent, subtree_end);");
+  b.line("detail::minus_times_tree<S, nv>(d.dalphaD_dalpha, d.Minv, id.dtau_dalpha, dof_parent, subtree_end);");
 }
 
 /// alphaD = (H + diag(armature))^-1 (tau - bias) into d.alphaD, then the derivatives (biasCall

@@ -27,21 +27,21 @@ void emitRigidBodyDerivatives(Block & b, const RobotModel & rm, const std::optio
 {
   PassContext ctx(b, rm);
   const bool anyContact = contacts && !contacts->contacts.empty();
-  MotionRequest req = MotionRequest::make(true, velocityTerms || anyContact, true);
-  req.velocityProducts = velocityTerms;
-  req.gravity = gravity;
-  const MotionState m = forwardMotion(ctx, req, ctx.allJoints());
-  // the rigid-body terms see alpha = 0 without velocity terms; the contacts see the true velocities
-  MotionState still = m;
-  if(!velocityTerms) std::fill(still.v.begin(), still.v.end(), Motion{Vec3::zero(), Vec3::zero()});
+  // poses (and the body velocities the contacts read); the world velocities and accelerations of
+  // the rigid-body terms come from worldBodies' own recursion
+  const MotionState m = forwardMotion(ctx, MotionRequest::make(true, anyContact), ctx.allJoints());
   // Origin of the passes: world axes at the first root joint's body origin r0 (a floating base 1e4 m
   // from the world origin, or an arm mounted 1 km away, would cost ~|r0| u in the moments otherwise);
   // d tau does not depend on the origin. a_0 = [0; -g] is the same at every point.
   const Vec3 r0 = !rm.joints.empty() && rm.joints.front().parent < 0 ? m.X0.front().r : Vec3::zero();
   const bool shifted = !(r0[0].isZero() && r0[1].isZero() && r0[2].isZero());
+  std::vector<Xform> X0 = m.X0;
   if(shifted)
-    for(std::size_t k = 0; k < rm.joints.size(); ++k) still.X0[k].r = sub(b, m.X0[k].r, r0, rm.joints[k].tag + "_r0");
-  const std::vector<WorldBody> w = worldBodies(ctx, still);
+    for(std::size_t k = 0; k < rm.joints.size(); ++k) X0[k].r = sub(b, m.X0[k].r, r0, rm.joints[k].tag + "_r0");
+  Motion a0 = Motion::zero();
+  for(int i = 0; i < 3 && gravity; ++i) a0.v[i] = Scalar::constant(-(*gravity)[i]);
+  // the rigid-body terms see alpha = 0 without velocity terms; the contacts see the true velocities
+  const std::vector<WorldBody> w = worldBodies(ctx, X0, velocityTerms, a0);
   const std::vector<SubtreeSums> c = subtreeSums(ctx, w);
   std::vector<Force> fext;
   if(!wrenchBodies.empty())

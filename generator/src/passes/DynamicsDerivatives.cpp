@@ -33,10 +33,13 @@ InertiaRate inertiaRate(Block & b, const Inertia & I, const Motion & v, const st
   for(int r = 0; r < 3; ++r)
     for(int c = r; c < 3; ++c)
     {
-      std::vector<Term> t = A(r, c, 1.0);
-      for(Term & x : A(c, r, 1.0)) t.push_back(x);
-      t.push_back(Term{-1.0, {I.h[r], v.v[c]}});
-      t.push_back(Term{-1.0, {v.v[r], I.h[c]}});
+      // on the diagonal A + A^T and h u^T + u h^T are twice one product
+      const double twice = r == c ? 2.0 : 1.0;
+      std::vector<Term> t = A(r, c, twice);
+      if(r != c)
+        for(Term & x : A(c, r, 1.0)) t.push_back(x);
+      t.push_back(Term{-twice, {I.h[r], v.v[c]}});
+      if(r != c) t.push_back(Term{-1.0, {v.v[r], I.h[c]}});
       if(r == c) t.push_back(Term{2.0, {vh}});
       R.J(r, c) = b.sum(t, fmt::format("{}_J{}{}", hint, r, c));
       R.J(c, r) = R.J(r, c);
@@ -58,9 +61,15 @@ InertiaRate add(Block & b, const InertiaRate & x, const InertiaRate & y, const s
 
 Motion zeroMotion() { return Motion::zero(); }
 
+/// x m
+Motion scale(Block & b, const Scalar & x, const Motion & m, const std::string & hint)
+{
+  return {cg::scale(b, x, m.w, hint + "_w"), cg::scale(b, x, m.v, hint + "_v")};
+}
+
 } // namespace
 
-std::vector<WorldBody> worldBodies(PassContext & ctx, const MotionState & m)
+std::vector<WorldBody> worldBodies(PassContext & ctx, const std::vector<Xform> & X0, bool velocity, const Motion & a0)
 {
   Block & b = ctx.block();
   std::vector<WorldBody> out(ctx.model().joints.size());
@@ -69,13 +78,24 @@ std::vector<WorldBody> worldBodies(PassContext & ctx, const MotionState & m)
     const auto kk = static_cast<std::size_t>(k);
     const MovingJoint & mj = ctx.joint(k);
     const JointKernel & K = ctx.kernel(k);
-    const Xform & X0 = m.X0[kk];
     WorldBody & w = out[kk];
+    const WorldBody * parent = mj.parent < 0 ? nullptr : &out[static_cast<std::size_t>(mj.parent)];
     b.comment(fmt::format("{}: world s, v, a, I, I v, I a + v x* I v, dI/dt", mj.tag));
-    for(std::size_t d = 0; d < K.S.size(); ++d) w.s.push_back(invApply(b, X0, K.S[d], fmt::format("{}_s{}", mj.tag, d)));
-    w.v = invApply(b, X0, m.v[kk], mj.tag + "_vw");
-    w.a = invApply(b, X0, m.a[kk], mj.tag + "_aw");
-    w.I = transApply(b, X0, bodyInertia(mj), mj.tag + "_Iw");
+    for(std::size_t d = 0; d < K.S.size(); ++d) w.s.push_back(invApply(b, X0[kk], K.S[d], fmt::format("{}_s{}", mj.tag, d)));
+    // vJ = s alpha, aJ = s alphaD (world)
+    Motion vJ = Motion::zero(), aJ = Motion::zero();
+    for(std::size_t d = 0; d < w.s.size(); ++d)
+    {
+      const int i = mj.vIndex + static_cast<int>(d);
+      const std::string h = fmt::format("{}_{}", mj.tag, d);
+      if(velocity) vJ = add(b, vJ, scale(b, Scalar::var(fmt::format("alpha[{}]", i)), w.s[d], h + "_vJ"), mj.tag + "_vJw");
+      aJ = add(b, aJ, scale(b, Scalar::var(fmt::format("alphaD[{}]", i)), w.s[d], h + "_aJ"), mj.tag + "_aJw");
+    }
+    // v = v_p + vJ, a = a_p + aJ + v_p x vJ
+    w.v = parent ? add(b, parent->v, vJ, mj.tag + "_vw") : vJ;
+    w.a = add(b, parent ? parent->a : a0, aJ, mj.tag + "_aw0");
+    if(parent && velocity) w.a = add(b, w.a, cross(b, parent->v, vJ, mj.tag + "_vxvJ"), mj.tag + "_aw");
+    w.I = transApply(b, X0[kk], bodyInertia(mj), mj.tag + "_Iw");
     w.h = cg::apply(b, w.I, w.v, mj.tag + "_hw");
     w.g = cg::add(b, cg::apply(b, w.I, w.a, mj.tag + "_Ia"), crossDual(b, w.v, w.h, mj.tag + "_vxh"), mj.tag + "_gw");
     w.Id = inertiaRate(b, w.I, w.v, mj.tag + "_Id");
@@ -327,8 +347,11 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
       // not inline): register allocation per column rather than over the whole body (compile time)
       if(stashOn) b.line("[&]() RBDGEN_NOINLINE {");
       const Motion yvQ = cross(b, wv, sm, h + "yv");
-      const Motion yaQ = add(b, cross(b, aw, sm, h + "axs"), cross(b, cross(b, sm, wv, h + "sxw"), wv, h + "sxwxw"), h + "ya");
-      const Motion yaA = add(b, cross(b, vCarrier, sm, h + "sd"), yvQ, h + "yaA");
+      const Motion yaQ = add(b, cross(b, aw, sm, h + "axs"), cross(b, wv, yvQ, h + "wxyv"), h + "ya");
+      // sdot_m = vCarrier x s_m; of a 1-dof joint carried by its body v_j x s_m = (w + s_m alpha_m) x s_m
+      // = w x s_m, so yaA = 2 yvQ
+      const Motion yaA = forward && w[j].s.size() == 1 ? scale(b, Scalar::constant(2.0), yvQ, h + "yaA")
+                                                       : add(b, cross(b, vCarrier, sm, h + "sd"), yvQ, h + "yaA");
       // dF of the subtree of j (for the ancestors and for j's own dofs when not carried):
       // dFq = s x* Gc + Ic yaQ + Bc yvQ, dFa = Ic yaA + Bc s, with Bc y = dIc y + y x* Hc
       const bool needDF = p >= 0 || !forward;
@@ -338,8 +361,10 @@ void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const 
         const SubtreeSums & cj = pj[j].c;
         dFq = cg::add(b, cg::add(b, crossDual(b, sm, cj.Gc, h + "sxG"), cg::apply(b, cj.Ic, yaQ, h + "Iya"), h + "dFq1"),
                       cg::add(b, apply(b, cj.Idc, yvQ, h + "Idyv"), crossDual(b, yvQ, cj.Hc, h + "yvxH"), h + "dFq2"), h + "dFq");
+        // dIc s + s x* Hc = b_m + 2 s x* Hc (b_m: the row of the column's own dof)
+        const Force sxH = crossDual(b, sm, cj.Hc, h + "sxH");
         dFa = cg::add(b, cg::apply(b, cj.Ic, yaA, h + "IyaA"),
-                      cg::add(b, apply(b, cj.Idc, sm, h + "Ids"), crossDual(b, sm, cj.Hc, h + "sxH"), h + "dFa2"), h + "dFa");
+                      cg::add(b, bk[j][d], cg::add(b, sxH, sxH, h + "2sxH"), h + "dFa2"), h + "dFa");
       }
       // the subtree of j: joints i >= j whose support path contains j; as one block of rows
       // [first, first + rows) of UB times Yq = [yaQ; yvQ] and Ya = [yaA; s] when its dofs are

@@ -1,14 +1,18 @@
 #pragma once
 // The passes of the inverse dynamics derivatives (runtime: rbd/IDDerivatives.h, which states the
 // equations), all in world coordinates so that sums over a subtree need no transform:
-//   worldBodies:  s_k, v_k, a_k (a_0 = [0; -g]), I_k, h_k = I_k v_k, g_k = I_k a_k + v_k x* h_k and
+//   worldBodies:  s_k = X_0_k^-1 S_k, then root to leaves in world coordinates (no body-frame pass):
+//                 vJ_k = s_k alpha_k, v_k = v_p + vJ_k, a_k = a_p + s_k alphaD_k + v_p x vJ_k
+//                 (a_0 = [0; -g]; the world derivative of s_k is v_carrier x s_k, and summed over
+//                 the joint's dofs v_k x vJ_k = v_p x vJ_k), I_k, h_k = I_k v_k, g_k = I_k a_k + v_k x* h_k,
 //                 dI_k/dt = v_k x* I_k - I_k v_k x = [[J, hd^], [hd^T, 0]],
 //                 J = A + A^T - h v^T - v h^T + 2 (v.h) 1 with A = w^ Ibar, hd = w x h + m v
 //   subtreeSums:  Ic, dIc/dt, Hc = sum h, Gc = sum g over each joint's subtree (leaves to root)
 //   derivativePairs: for dof m of joint j and dof k of joint i in the subtree of j, with
 //                 u_k = Ic_i s_k, b_k = Bc_i^T s_k = dIc_i s_k - s_k x* Hc_i:
-//                 dtau_k/dq_m = u_k . (a_w x s_m + (s_m x w) x w) + b_k . (w x s_m)
+//                 dtau_k/dq_m = u_k . (a_w x s_m + w x (w x s_m)) + b_k . (w x s_m)
 //                 dtau_k/dalpha_m = u_k . (sdot_m + w x s_m) + b_k . s_m
+//                 (w, a_w: of j's parent; sdot_m = v_j x s_m, which is w x s_m for a 1-dof joint)
 //                 and for k on a strict ancestor a of j: s_k . dF_j (the force change of j's subtree).
 //                 With u_k, b_k as the rows of UB (nv x 12) and the s_k as the rows of SM (nv x 6), a
 //                 column's entries over a contiguous range of rows (j's subtree: RBDyn numbers dofs
@@ -48,8 +52,10 @@ struct SubtreeSums
   Force Hc, Gc;
 };
 
-/// World quantities of every moving joint's body from a forward pass with poses, velocity and acceleration.
-std::vector<WorldBody> worldBodies(PassContext & ctx, const MotionState & m);
+/// World quantities of every moving joint's body from the world poses X0 (world axes at the origin
+/// of the passes): velocities from `alpha` (none: every v_k = 0), accelerations from `alphaD` and
+/// a0, the inherited acceleration of root joints ([0; -g]).
+std::vector<WorldBody> worldBodies(PassContext & ctx, const std::vector<Xform> & X0, bool velocity, const Motion & a0);
 /// Sums over each joint's subtree.
 std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<WorldBody> & w);
 /// d tau/dq and d tau/dalpha entries, handed to onEntry(row, col, dq, dalpha); entries never

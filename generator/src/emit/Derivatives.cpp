@@ -37,12 +37,12 @@ void emitRigidBodyDerivatives(Block & b, const RobotModel & rm, const std::optio
   const bool shifted = !(r0[0].isZero() && r0[1].isZero() && r0[2].isZero());
   std::vector<Xform> X0 = m.X0;
   if(shifted)
-    for(std::size_t k = 0; k < rm.joints.size(); ++k) X0[k].r = sub(b, m.X0[k].r, r0, rm.joints[k].tag + "_r0");
+    for(std::size_t k = 0; k < rm.joints.size(); ++k) // (the first root joint's is r0 - r0 = 0)
+      X0[k].r = k == 0 ? Vec3::zero() : sub(b, m.X0[k].r, r0, rm.joints[k].tag + "_r0");
   Motion a0 = Motion::zero();
   for(int i = 0; i < 3 && gravity; ++i) a0.v[i] = Scalar::constant(-(*gravity)[i]);
   // the rigid-body terms see alpha = 0 without velocity terms; the contacts see the true velocities
   const std::vector<WorldBody> w = worldBodies(ctx, X0, velocityTerms, a0);
-  const std::vector<SubtreeSums> c = subtreeSums(ctx, w);
   std::vector<Force> fext;
   if(!wrenchBodies.empty())
   {
@@ -58,6 +58,7 @@ void emitRigidBodyDerivatives(Block & b, const RobotModel & rm, const std::optio
         fext[static_cast<std::size_t>(a)] = cg::add(b, fext[static_cast<std::size_t>(a)], wk, rm.joints[static_cast<std::size_t>(a)].tag + "_Fe");
     }
   }
+  const std::vector<SubtreeSums> c = subtreeSums(ctx, X0, w);
   derivativePairs(ctx, w, c, gravity.value_or(Eigen::Vector3d::Zero()), fext,
                   [&](int r, int col, const Scalar & dq, const Scalar & da) {
                     if(!dq.isZero()) b.line(fmt::format("d.dtau_dq({}, {}) = {};", r, col, Block::text(dq)));

@@ -4,16 +4,20 @@
 //   worldBodies:  s_k = X_0_k^-1 S_k, then root to leaves in world coordinates (no body-frame pass):
 //                 vJ_k = s_k alpha_k, v_k = v_p + vJ_k, a_k = a_p + s_k alphaD_k + v_p x vJ_k
 //                 (a_0 = [0; -g]; the world derivative of s_k is v_carrier x s_k, and summed over
-//                 the joint's dofs v_k x vJ_k = v_p x vJ_k), I_k, h_k = I_k v_k, g_k = I_k a_k + v_k x* h_k,
+//                 the joint's dofs v_k x vJ_k = v_p x vJ_k)
+//   subtreeSums:  leaves to root, each body's I_k, h_k = I_k v_k, g_k = I_k a_k + v_k x* h_k,
 //                 dI_k/dt = v_k x* I_k - I_k v_k x = [[J, hd^], [hd^T, 0]],
-//                 J = A + A^T - h v^T - v h^T + 2 (v.h) 1 with A = w^ Ibar, hd = w x h + m v
-//   subtreeSums:  Ic, dIc/dt, Hc = sum h, Gc = sum g over each joint's subtree (leaves to root)
-//   derivativePairs: for dof m of joint j and dof k of joint i in the subtree of j, with
+//                 J = A + A^T - h v^T - v h^T + 2 (v.h) 1 with A = w^ Ibar, hd = w x h + m v,
+//                 added into Ic, dIc/dt, Hc = sum h, Gc = sum g over each joint's subtree (computed
+//                 where they are summed: nothing per body stays live across the tree)
+//   DerivativePairs: the rows u_k, b_k of each joint (joint(k)), then columns(): for dof m of joint
+//                 j and dof k of joint i in the subtree of j, with
 //                 u_k = Ic_i s_k, b_k = Bc_i^T s_k = dIc_i s_k - s_k x* Hc_i:
 //                 dtau_k/dq_m = u_k . (a_w x s_m + w x (w x s_m)) + b_k . (w x s_m)
 //                 dtau_k/dalpha_m = u_k . (sdot_m + w x s_m) + b_k . s_m
 //                 (w, a_w: of j's parent; sdot_m = v_j x s_m, which is w x s_m for a 1-dof joint)
-//                 and for k on a strict ancestor a of j: s_k . dF_j (the force change of j's subtree).
+//                 and for k on a strict ancestor a of j: s_k . dF_j (the force change of j's subtree),
+//                 dFa_m = Ic_j yaA + Bc_j s_m = Ic_j yaA + b_m + 2 s_m x* Hc_j.
 //                 With u_k, b_k as the rows of UB (nv x 12) and the s_k as the rows of SM (nv x 6), a
 //                 column's entries over a contiguous range of rows (j's subtree: RBDyn numbers dofs
 //                 depth first; a run of consecutive ancestor dofs, e.g. a floating base's six) are one
@@ -40,24 +44,23 @@ struct WorldBody
 {
   std::vector<Motion> s; ///< motion subspace columns
   Motion v, a;           ///< velocity, acceleration (gravity as a_0 = [0; -g])
-  Inertia I;
-  Force h, g;            ///< momentum I v, inertial force I a + v x* I v
-  InertiaRate Id;        ///< dI/dt
 };
 
 struct SubtreeSums
 {
   Inertia Ic;
   InertiaRate Idc;
-  Force Hc, Gc;
+  Force Hc, Gc; ///< sums of the momenta I v and of the inertial forces I a + v x* I v
 };
 
-/// World quantities of every moving joint's body from the world poses X0 (world axes at the origin
-/// of the passes): velocities from `alpha` (none: every v_k = 0), accelerations from `alphaD` and
-/// a0, the inherited acceleration of root joints ([0; -g]).
+/// s, v, a of every moving joint's body from the world poses X0 (world axes at the origin of the
+/// passes), root to leaves: velocities from `alpha` (none: every v_k = 0), accelerations from
+/// `alphaD` and a0, the inherited acceleration of root joints ([0; -g]).
 std::vector<WorldBody> worldBodies(PassContext & ctx, const std::vector<Xform> & X0, bool velocity, const Motion & a0);
-/// Sums over each joint's subtree.
-std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<WorldBody> & w);
+/// Leaves to root: each body's world I, h = I v, g = I a + v x* h and dI/dt, emitted where they are
+/// added into the sums over each joint's subtree (none of them stays live across the tree).
+std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<Xform> & X0, const std::vector<WorldBody> & w);
+
 /// d tau/dq and d tau/dalpha entries, handed to onEntry(row, col, dq, dalpha); entries never
 /// handed over are zero. gravity: the world gravity of the forward pass (m/s^2), a_0 = [0; -gravity]
 /// (zero: none). fextSums: when not empty, per joint the sum over its subtree of the external
@@ -66,7 +69,7 @@ std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<WorldB
 /// with fextSums): the entries of rows [first, first + rows) of column col (the subtree of the
 /// column's joint, or a run of consecutive ancestor dofs) as expressions (empty: zero) over
 /// `pair_ub` (row k = [u_k; b_k]) or `pair_sm` (row k = s_k), declared and filled here, instead of
-/// one onEntry per entry.
+/// one onEntry per entry. Emitted: the rows u_k, b_k of every joint (root first), then the columns.
 void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
                      const Eigen::Vector3d & gravity, const std::vector<Force> & fextSums,
                      const std::function<void(int row, int col, const Scalar & dq, const Scalar & da)> & onEntry,

@@ -1,5 +1,6 @@
 // Compiled once per generated header:
-//   -DRBDGEN_NS=<namespace> -DRBDGEN_ROBOT="robot" -DRBDGEN_VERSION_TAG="before|after".
+//   -DRBDGEN_NS=<namespace> -DRBDGEN_ROBOT="robot" -DRBDGEN_VERSION_TAG="before|after"
+//   [-DRBDGEN_DERIVATIVES: the header has the derivatives, timed too].
 #include <array>
 #include <chrono>
 #include <type_traits>
@@ -70,6 +71,20 @@ void flatten(const ns::Kinematics<double> & k, std::vector<double> & out)
   flatten(k.pose, out);
   flatten(k.frame, out);
 }
+#if defined(RBDGEN_DERIVATIVES)
+void flatten(const ns::IdDerivatives<double> & d, std::vector<double> & out)
+{
+  flatten(d.dtau_dq, out);
+  flatten(d.dtau_dalpha, out);
+}
+void flatten(const ns::FdDerivatives<double> & d, std::vector<double> & out)
+{
+  flatten(d.alphaD, out);
+  flatten(d.dalphaD_dq, out);
+  flatten(d.dalphaD_dalpha, out);
+  flatten(d.Minv, out);
+}
+#endif
 
 // Two entries of a result, read after every call.
 template<class M>
@@ -78,6 +93,10 @@ double probe(const ns::Pose<double> & p) { return p.rotation(0, 0) + p.translati
 template<class T, std::size_t N>
 double probe(const std::array<T, N> & a) { return probe(a.front()) + probe(a.back()); }
 double probe(const ns::Kinematics<double> & k) { return probe(k.pose) + probe(k.frame); }
+#if defined(RBDGEN_DERIVATIVES)
+double probe(const ns::IdDerivatives<double> & d) { return probe(d.dtau_dq) + probe(d.dtau_dalpha); }
+double probe(const ns::FdDerivatives<double> & d) { return probe(d.dalphaD_dq) + probe(d.Minv); }
+#endif
 
 // F: (Body, const Inputs &, state index) -> result, a noinline function (the call a user's code makes).
 template<auto F>
@@ -173,6 +192,16 @@ RBDGEN_NOINLINE auto forwardDynamics(ns::Body, const Inputs & x, std::size_t i)
   return ns::forward_dynamics<double>(x.q[i], x.alpha[i], x.alphaD[i]);
 }
 RBDGEN_NOINLINE auto massMatrix(ns::Body, const Inputs & x, std::size_t i) { return ns::mass_matrix<double>(x.q[i]); }
+#if defined(RBDGEN_DERIVATIVES) // (headers generated with --derivatives)
+RBDGEN_NOINLINE auto idDerivatives(ns::Body, const Inputs & x, std::size_t i)
+{
+  return ns::inverse_dynamics_derivatives<double>(x.q[i], x.alpha[i], x.alphaD[i]);
+}
+RBDGEN_NOINLINE auto fdDerivatives(ns::Body, const Inputs & x, std::size_t i)
+{
+  return ns::forward_dynamics_derivatives<double>(x.q[i], x.alpha[i], x.alphaD[i]);
+}
+#endif
 
 template<auto F>
 FunctionCase function(const char * name, bool link)
@@ -213,6 +242,10 @@ const bool registered = [] {
                             function<massMatrix>("mass_matrix(q)", false)}});
   auto & functions = headerCases().back().functions;
   functions.insert(functions.begin() + 4, jdot.begin(), jdot.end());
+#if defined(RBDGEN_DERIVATIVES)
+  functions.push_back(function<idDerivatives>("inverse_dynamics_derivatives(q, alpha, alphaD)", false));
+  functions.push_back(function<fdDerivatives>("forward_dynamics_derivatives(q, alpha, tau)", false));
+#endif
   return true;
 }();
 } // namespace

@@ -1,7 +1,9 @@
 // The functions of headers from two generators (before, after) in one binary: agreement first,
 // then alternating timed runs; a Markdown table on stdout.
-//   before_after [--functions NAME;NAME...] ROBOT[:LINK[,LINK...]] ...
-// A function that takes a Body is timed on each LINK given; the others once per robot.
+//   before_after [--raw] [--functions NAME;NAME...] ROBOT[:LINK[,LINK...]] ...
+// A function that takes a Body is timed on each LINK given; the others once per robot. --raw: one
+// tab-separated line per row instead (robot, function, link, before ns, after ns, difference), for
+// before_after.sh to merge the runs of several code layouts.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -88,18 +90,21 @@ double disagreement(const FunctionCase & fb, const FunctionCase & fa, int bb, in
 int main(int argc, char ** argv)
 {
   std::vector<std::string> only, specs;
+  bool raw = false;
   for(int a = 1; a < argc; ++a)
   {
     const std::string arg = argv[a];
-    if(arg == "--functions" && a + 1 < argc)
+    if(arg == "--raw") raw = true;
+    else if(arg == "--functions" && a + 1 < argc)
     {
       std::stringstream names(argv[++a]);
       for(std::string n; std::getline(names, n, ';');) only.push_back(n);
     }
     else specs.push_back(arg);
   }
-  std::printf("| robot | function | link | before ns | after ns | before / after | max difference (relative) |\n"
-              "|---|---|---|--:|--:|--:|--:|\n");
+  if(!raw)
+    std::printf("| robot | function | link | before ns | after ns | before / after | max difference (relative) |\n"
+                "|---|---|---|--:|--:|--:|--:|\n");
   int status = 0;
   for(const std::string & spec : specs)
   {
@@ -149,8 +154,10 @@ int main(int argc, char ** argv)
           ta.push_back(fa.time(ba, s, iters, r));
         }
         const double mb = median(tb), ma = median(ta);
-        std::printf("| %s | %s | %s | %.1f | %.1f | %.2f× | %.1e |\n", robot.c_str(), fa.name.c_str(), link.c_str(),
-                    mb, ma, mb / ma, diff);
+        if(raw) std::printf("%s\t%s\t%s\t%.1f\t%.1f\t%.1e\n", robot.c_str(), fa.name.c_str(), link.c_str(), mb, ma, diff);
+        else
+          std::printf("| %s | %s | %s | %.1f | %.1f | %.2f× | %.1e |\n", robot.c_str(), fa.name.c_str(), link.c_str(),
+                      mb, ma, mb / ma, diff);
         std::fflush(stdout);
       }
     }

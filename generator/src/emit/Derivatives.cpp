@@ -186,7 +186,7 @@ void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std:
 /// the operations use that segment. The rows are those of d.Minv's storage read as row-major (M^-1
 /// is symmetric: no copy). dID's column c is zero but in the rows of c's ancestors and subtree (a
 /// torque depends on the q and alpha of the joints on its own paths only), so each column of the
-/// product sums those rows of Minv only (detail::minus_times_tree): talos_reduced + free base
+/// product sums those rows of Minv only (detail::minus_times_tree2): talos_reduced + free base
 /// 700 of 1,444 entries.
 void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv)
 {
@@ -217,11 +217,18 @@ void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv)
     const auto [n, x] = segment(i, i);
     b.line(fmt::format("detail::row_scale<{}>({}, {});", n, x, Block::text(f.invD[i])));
   }
+  // L pass: row i -= L(i, j) row j over i's ancestors j, in one call per row (detail::row_axpys)
   for(std::size_t i = 0; i < nv; ++i)
+  {
+    std::string coefficients, rows;
     for(int j = f.lambda[i]; j >= 0; j = f.lambda[static_cast<std::size_t>(j)])
       if(!f.L[i][static_cast<std::size_t>(j)].isZero())
-        b.line(fmt::format("detail::row_axpy<nv>(X + {}, {}, X + {});", i * nv, Block::text(f.L[i][static_cast<std::size_t>(j)]),
-                           static_cast<std::size_t>(j) * nv));
+      {
+        coefficients += fmt::format("{}{}", coefficients.empty() ? "" : ", ", Block::text(f.L[i][static_cast<std::size_t>(j)]));
+        rows += fmt::format("{}X + {}", rows.empty() ? "" : ", ", static_cast<std::size_t>(j) * nv);
+      }
+    if(!rows.empty()) b.line(fmt::format("detail::row_axpys<nv>(X + {}, {{{}}}, {{{}}});", i * nv, coefficients, rows));
+  }
   std::string parents, ends;
   for(std::size_t i = 0; i < nv; ++i)
   {
@@ -230,8 +237,7 @@ void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv)
   }
   b.comment("d alphaD = -H^-1 dID at alphaD (dof tree: parent and last dof of the subtree of each dof)");
   b.line(fmt::format("static constexpr int dof_parent[nv] = {{{}}}, subtree_end[nv] = {{{}}};", parents, ends));
-  b.line("detail::minus_times_tree<S, nv>(d.dalphaD_dq, d.Minv, id.dtau_dq, dof_parent, subtree_end);");
-  b.line("detail::minus_times_tree<S, nv>(d.dalphaD_dalpha, d.Minv, id.dtau_dalpha, dof_parent, subtree_end);");
+  b.line("detail::minus_times_tree2<S, nv>(d.dalphaD_dq, d.dalphaD_dalpha, d.Minv, id.dtau_dq, id.dtau_dalpha, dof_parent, subtree_end);");
 }
 
 /// alphaD = (H + diag(armature))^-1 (tau - bias) into d.alphaD, then the derivatives (biasCall

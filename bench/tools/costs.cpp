@@ -69,7 +69,7 @@ int main(int argc, char ** argv)
       const rbdgen::RobotModel rm = rbdgen::robotModelFromUrdf(robot);
       const long n = rm.nv;
       const auto nle = emit::rneaBody(rm, {true, false, true});
-      const auto kin = emit::kinematicsBody(rm);
+      const auto kin = emit::linkPosesCallBody(rm, "kin.pose", true); // (kinematics(q): what jacobian and com read)
       row(name, rm.nv, "fk", {emit::forwardKinematicsBody(rm)});
       row(name, rm.nv, "fk_vel", {emit::bodyVelocitiesBody(rm)});
       row(name, rm.nv, "id", {emit::rneaBody(rm, {true, true, true})}, 93 * n - 69, 81 * n - 66);

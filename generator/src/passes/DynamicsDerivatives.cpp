@@ -467,6 +467,48 @@ void DerivativePairs::columns()
   // a_0 = [0; -g] as the forward pass uses it (the root's inherited acceleration)
   Motion a0 = Motion::zero();
   for(int i = 0; i < 3; ++i) a0.v[i] = Scalar::constant(-gravity[i]);
+  // the columns of one-dof forward joints with a parent: their yaQ, yvQ, yaA, dFq, dFa across
+  // columns in SIMD lanes (detail::column_terms), lane = index among them
+  std::vector<int> lane(n, -1);
+  std::vector<std::size_t> laneJoint;
+  for(std::size_t j = 0; j < n && n >= kBodiesAcross; ++j)
+    if(rm.joints[j].nv == 1 && rm.joints[j].joint.forward() && rm.joints[j].parent >= 0)
+    {
+      lane[j] = static_cast<int>(laneJoint.size());
+      laneJoint.push_back(j);
+    }
+  if(!laneJoint.empty())
+  {
+    const std::size_t lanes = (laneJoint.size() + kBodyPad - 1) / kBodyPad * kBodyPad;
+    b.comment(fmt::format("yaQ, yvQ, yaA, dFq, dFa of the columns of one-dof joints, across columns (detail::column_terms; "
+                          "lanes {} to {}: zero)", laneJoint.size(), lanes - 1));
+    b.line(fmt::format("S ct_in[55][{}];", lanes));
+    b.line(fmt::format("S ct_out[30][{}];", lanes));
+    for(std::size_t l = 0; l < laneJoint.size(); ++l)
+    {
+      const std::size_t j = laneJoint[l];
+      const PairJoint & q = pj[static_cast<std::size_t>(rm.joints[j].parent)];
+      const SubtreeSums & c = pj[j].c;
+      std::vector<const Scalar *> in;
+      const auto vec = [&](const Vec3 & x) {
+        for(int i = 0; i < 3; ++i) in.push_back(&x[i]);
+      };
+      for(const Vec3 * x : {&q.v.w, &q.v.v, &q.a.w, &q.a.v, &s[j][0].w, &s[j][0].v, &bk[j][0].n, &bk[j][0].f, &c.Gc.n, &c.Gc.f,
+                            &c.Hc.n, &c.Hc.f})
+        vec(*x);
+      in.push_back(&c.Ic.m);
+      vec(c.Ic.h);
+      for(const Mat3 * M : {&c.Ic.I, &c.Idc.J})
+        for(int r = 0; r < 3; ++r)
+          for(int col = r; col < 3; ++col) in.push_back(&(*M)(r, col));
+      vec(c.Idc.hd);
+      for(std::size_t i = 0; i < in.size(); ++i) b.line(fmt::format("ct_in[{}][{}] = {};", i, l, Block::text(*in[i])));
+    }
+    if(lanes > laneJoint.size())
+      b.line(fmt::format("for(auto & row : ct_in) for(int k = {}; k < {}; ++k) row[k] = S(0);", laneJoint.size(), lanes));
+    b.line("detail::column_terms<S>(ct_in, ct_out);");
+    if(stashOn) b.line("detail::opaque(ct_out);");
+  }
   for(std::size_t j = 0; j < n; ++j)
   {
     const MovingJoint & mj = rm.joints[j];
@@ -487,16 +529,36 @@ void DerivativePairs::columns()
       // with the inputs in arrays, each column is a function of its own (a lambda the compiler does
       // not inline): register allocation per column rather than over the whole body (compile time)
       if(stashOn) b.line("[&]() RBDGEN_NOINLINE {");
-      const Motion yvQ = cross(b, wv, sm, h + "yv");
-      const Motion yaQ = add(b, cross(b, aw, sm, h + "axs"), cross(b, wv, yvQ, h + "wxyv"), h + "ya");
+      const bool needDF = p >= 0 || !forward;
+      Motion yvQ, yaQ, yaA;
+      Force dFq, dFa;
+      if(lane[j] >= 0)
+      {
+        const auto v = [&](int row) { return Scalar::var(fmt::format("ct_out[{}][{}]", row, lane[j])); };
+        for(int i = 0; i < 3; ++i)
+        {
+          yaQ.w[i] = v(i);
+          yaQ.v[i] = v(3 + i);
+          yvQ.w[i] = v(6 + i);
+          yvQ.v[i] = v(9 + i);
+          yaA.w[i] = v(12 + i);
+          yaA.v[i] = v(15 + i);
+          dFq.n[i] = v(18 + i);
+          dFq.f[i] = v(21 + i);
+          dFa.n[i] = v(24 + i);
+          dFa.f[i] = v(27 + i);
+        }
+      }
+      else
+      {
+      yvQ = cross(b, wv, sm, h + "yv");
+      yaQ = add(b, cross(b, aw, sm, h + "axs"), cross(b, wv, yvQ, h + "wxyv"), h + "ya");
       // sdot_m = vCarrier x s_m; of a 1-dof joint carried by its body v_j x s_m = (w + s_m alpha_m) x s_m
       // = w x s_m, so yaA = 2 yvQ
-      const Motion yaA = forward && w[j].s.size() == 1 ? scale(b, Scalar::constant(2.0), yvQ, h + "yaA")
-                                                       : add(b, cross(b, vCarrier, sm, h + "sd"), yvQ, h + "yaA");
+      yaA = forward && w[j].s.size() == 1 ? scale(b, Scalar::constant(2.0), yvQ, h + "yaA")
+                                          : add(b, cross(b, vCarrier, sm, h + "sd"), yvQ, h + "yaA");
       // dF of the subtree of j (for the ancestors and for j's own dofs when not carried):
       // dFq = s x* Gc + Ic yaQ + Bc yvQ, dFa = Ic yaA + Bc s, with Bc y = dIc y + y x* Hc
-      const bool needDF = p >= 0 || !forward;
-      Force dFq, dFa;
       if(needDF)
       {
         const SubtreeSums & cj = pj[j].c;
@@ -506,6 +568,7 @@ void DerivativePairs::columns()
         const Force sxH = crossDual(b, sm, cj.Hc, h + "sxH");
         dFa = cg::add(b, cg::apply(b, cj.Ic, yaA, h + "IyaA"),
                       cg::add(b, bk[j][d], cg::add(b, sxH, sxH, h + "2sxH"), h + "dFa2"), h + "dFa");
+      }
       }
       // the subtree of j: joints i >= j whose support path contains j; as one block of rows
       // [first, first + rows) of UB times Yq = [yaQ; yvQ] and Ya = [yaA; s] when its dofs are

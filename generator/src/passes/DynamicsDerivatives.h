@@ -9,7 +9,9 @@
 //                 dI_k/dt = v_k x* I_k - I_k v_k x = [[J, hd^], [hd^T, 0]],
 //                 J = A + A^T - h v^T - v h^T + 2 (v.h) 1 with A = w^ Ibar, hd = w x h + m v,
 //                 added into Ic, dIc/dt, Hc = sum h, Gc = sum g over each joint's subtree (computed
-//                 where they are summed: nothing per body stays live across the tree)
+//                 where they are summed: nothing per body stays live across the tree; on trees of 8
+//                 joints or more, for all bodies first, in SIMD lanes across bodies, and read back
+//                 from arrays: detail::world_body_terms)
 //   DerivativePairs: the rows u_k, b_k of each joint (joint(k)), then columns(): for dof m of joint
 //                 j and dof k of joint i in the subtree of j, with
 //                 u_k = Ic_i s_k, b_k = Bc_i^T s_k = dIc_i s_k - s_k x* Hc_i:
@@ -18,6 +20,8 @@
 //                 (w, a_w: of j's parent; sdot_m = v_j x s_m, which is w x s_m for a 1-dof joint)
 //                 and for k on a strict ancestor a of j: s_k . dF_j (the force change of j's subtree),
 //                 dFa_m = Ic_j yaA + Bc_j s_m = Ic_j yaA + b_m + 2 s_m x* Hc_j.
+//                 On trees of 8 joints or more, yaQ, yvQ, yaA, dFq and dFa of the one-dof joints'
+//                 columns are computed first, in SIMD lanes across columns (detail::column_terms).
 //                 With u_k, b_k as the rows of UB (nv x 12) and the s_k as the rows of SM (nv x 6), a
 //                 column's entries over a contiguous range of rows (j's subtree: RBDyn numbers dofs
 //                 depth first; a run of consecutive ancestor dofs, e.g. a floating base's six) are one

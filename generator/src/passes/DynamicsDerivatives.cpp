@@ -335,6 +335,8 @@ private:
   EntryFn onEntry_;
   BlockFn onBlock_;
   bool stashOn_ = false, blocks_ = false;
+  std::vector<int> lane_;                 ///< per joint: its lane of detail::column_terms, or -1
+  std::vector<std::size_t> laneJoint_;    ///< per lane: its joint
   std::vector<std::vector<Force>> u_, b_; ///< per joint, per dof: u_k, b_k (or their slots)
   std::vector<std::vector<Motion>> s_;    ///< per joint, per dof: s_k (or its slots)
   std::vector<PairJoint> pj_;
@@ -368,6 +370,21 @@ DerivativePairs::DerivativePairs(PassContext & ctx, const std::vector<WorldBody>
   }
   if(stashOn_ && !blocks_) b.line(fmt::format("S pair_u[{0}][6], pair_b[{0}][6], pair_s[{0}][6];", rm.nv));
   if(stashOn_) b.line(fmt::format("S pair_j[{}][43];", std::max<std::size_t>(n, 1)));
+  // the one-dof forward joints with a parent: their rows u, b and their columns' yaQ, yvQ, yaA, dFq,
+  // dFa across joints in SIMD lanes (detail::column_terms), inputs written by joint()
+  lane_.assign(n, -1);
+  for(std::size_t j = 0; j < n && n >= kBodiesAcross; ++j)
+    if(rm.joints[j].nv == 1 && rm.joints[j].joint.forward() && rm.joints[j].parent >= 0)
+    {
+      lane_[j] = static_cast<int>(laneJoint_.size());
+      laneJoint_.push_back(j);
+    }
+  if(!laneJoint_.empty())
+  {
+    const std::size_t lanes = (laneJoint_.size() + kBodyPad - 1) / kBodyPad * kBodyPad;
+    b.line(fmt::format("S ct_in[49][{}];", lanes));
+    b.line(fmt::format("S ct_out[42][{}];", lanes));
+  }
 }
 
 void DerivativePairs::joint(int k, const SubtreeSums & c)
@@ -392,27 +409,55 @@ void DerivativePairs::joint(int k, const SubtreeSums & c)
     stashScalars(b, array, row, e);
     return out;
   };
+  // a lane's inputs of detail::column_terms: its parent's world v and a, s, Gc, Hc, Ic, dIc/dt
+  // (its row u, b comes from column_terms, in columns())
+  const int lane = lane_[i];
+  if(lane >= 0)
+  {
+    const WorldBody & wp = w_[static_cast<std::size_t>(rm.joints[i].parent)];
+    std::vector<const Scalar *> in;
+    const auto vec = [&](const Vec3 & x) {
+      for(int z = 0; z < 3; ++z) in.push_back(&x[z]);
+    };
+    for(const Vec3 * x : {&wp.v.w, &wp.v.v, &wp.a.w, &wp.a.v, &w_[i].s[0].w, &w_[i].s[0].v, &c.Gc.n, &c.Gc.f, &c.Hc.n, &c.Hc.f})
+      vec(*x);
+    in.push_back(&c.Ic.m);
+    vec(c.Ic.h);
+    for(const Mat3 * M : {&c.Ic.I, &c.Idc.J})
+      for(int r = 0; r < 3; ++r)
+        for(int col = r; col < 3; ++col) in.push_back(&(*M)(r, col));
+    vec(c.Idc.hd);
+    for(std::size_t x = 0; x < in.size(); ++x) b.line(fmt::format("ct_in[{}][{}] = {};", x, lane, Block::text(*in[x])));
+  }
   // u_k = Ic_i s_k, b_k = dIc_i s_k - s_k x* Hc_i for every dof of joint i (with s_k in arrays when
   // stashed: they live through all the columns)
   for(std::size_t d = 0; d < w_[i].s.size(); ++d)
   {
     const std::string h = fmt::format("{}_{}", rm.joints[i].tag, d);
     const int row = rm.joints[i].vIndex + static_cast<int>(d);
-    Force uk = cg::apply(b, c.Ic, w_[i].s[d], h + "u");
-    Force bkk = sub(b, apply(b, c.Idc, w_[i].s[d], h + "Ids"), crossDual(b, w_[i].s[d], c.Hc, h + "sxH"), h + "b");
+    Force uk, bkk;
+    if(lane < 0)
+    {
+      uk = cg::apply(b, c.Ic, w_[i].s[d], h + "u");
+      bkk = sub(b, apply(b, c.Idc, w_[i].s[d], h + "Ids"), crossDual(b, w_[i].s[d], c.Hc, h + "sxH"), h + "b");
+    }
     Motion sk = w_[i].s[d];
     if(blocks_)
     {
-      intoMatrix("pair_ub", row, {&uk.n[0], &uk.n[1], &uk.n[2], &uk.f[0], &uk.f[1], &uk.f[2], &bkk.n[0], &bkk.n[1], &bkk.n[2],
-                                  &bkk.f[0], &bkk.f[1], &bkk.f[2]});
+      if(lane < 0)
+        intoMatrix("pair_ub", row, {&uk.n[0], &uk.n[1], &uk.n[2], &uk.f[0], &uk.f[1], &uk.f[2], &bkk.n[0], &bkk.n[1], &bkk.n[2],
+                                    &bkk.f[0], &bkk.f[1], &bkk.f[2]});
       intoMatrix("pair_sm", row, {&sk.w[0], &sk.w[1], &sk.w[2], &sk.v[0], &sk.v[1], &sk.v[2]});
     }
     else
     {
-      const auto us = stash("pair_u", row, uk.n, uk.f), bs = stash("pair_b", row, bkk.n, bkk.f);
+      if(lane < 0)
+      {
+        const auto us = stash("pair_u", row, uk.n, uk.f), bs = stash("pair_b", row, bkk.n, bkk.f);
+        uk = Force{us[0], us[1]};
+        bkk = Force{bs[0], bs[1]};
+      }
       const auto ss = stash("pair_s", row, sk.w, sk.v);
-      uk = Force{us[0], us[1]};
-      bkk = Force{bs[0], bs[1]};
       sk = Motion{ss[0], ss[1]};
     }
     u_[i].push_back(uk);
@@ -449,13 +494,6 @@ void DerivativePairs::columns()
   const std::vector<PairJoint> & pj = pj_;
   const std::vector<Force> & fextSums = fextSums_;
   const bool stashOn = stashOn_, blocks = blocks_;
-  if(stashOn)
-  {
-    std::vector<std::string> arrays =
-        blocks ? std::vector<std::string>{"pair_ub.data()", "pair_sm.data()"} : std::vector<std::string>{"pair_u", "pair_b", "pair_s"};
-    arrays.push_back("pair_j");
-    for(const std::string & a : arrays) b.line(fmt::format("detail::opaque({});", a));
-  }
   // rows [first, first + rows) of column col: M (pair_ub or pair_sm) times yq and ya, computed over
   // a multiple of kBlockPad rows (detail::rows_times), its first `rows` kept
   auto emitBlock = [&](const std::string & M, const std::vector<Scalar> & yq, const std::vector<Scalar> & ya, int first,
@@ -467,47 +505,50 @@ void DerivativePairs::columns()
   // a_0 = [0; -g] as the forward pass uses it (the root's inherited acceleration)
   Motion a0 = Motion::zero();
   for(int i = 0; i < 3; ++i) a0.v[i] = Scalar::constant(-gravity[i]);
-  // the columns of one-dof forward joints with a parent: their yaQ, yvQ, yaA, dFq, dFa across
-  // columns in SIMD lanes (detail::column_terms), lane = index among them
-  std::vector<int> lane(n, -1);
-  std::vector<std::size_t> laneJoint;
-  for(std::size_t j = 0; j < n && n >= kBodiesAcross; ++j)
-    if(rm.joints[j].nv == 1 && rm.joints[j].joint.forward() && rm.joints[j].parent >= 0)
-    {
-      lane[j] = static_cast<int>(laneJoint.size());
-      laneJoint.push_back(j);
-    }
-  if(!laneJoint.empty())
+  // the lanes' rows u, b and columns' terms (detail::column_terms), then their rows into pair_ub
+  // (blocks) or read from ct_out
+  if(!laneJoint_.empty())
   {
-    const std::size_t lanes = (laneJoint.size() + kBodyPad - 1) / kBodyPad * kBodyPad;
-    b.comment(fmt::format("yaQ, yvQ, yaA, dFq, dFa of the columns of one-dof joints, across columns (detail::column_terms; "
-                          "lanes {} to {}: zero)", laneJoint.size(), lanes - 1));
-    b.line(fmt::format("S ct_in[55][{}];", lanes));
-    b.line(fmt::format("S ct_out[30][{}];", lanes));
-    for(std::size_t l = 0; l < laneJoint.size(); ++l)
-    {
-      const std::size_t j = laneJoint[l];
-      const PairJoint & q = pj[static_cast<std::size_t>(rm.joints[j].parent)];
-      const SubtreeSums & c = pj[j].c;
-      std::vector<const Scalar *> in;
-      const auto vec = [&](const Vec3 & x) {
-        for(int i = 0; i < 3; ++i) in.push_back(&x[i]);
-      };
-      for(const Vec3 * x : {&q.v.w, &q.v.v, &q.a.w, &q.a.v, &s[j][0].w, &s[j][0].v, &bk[j][0].n, &bk[j][0].f, &c.Gc.n, &c.Gc.f,
-                            &c.Hc.n, &c.Hc.f})
-        vec(*x);
-      in.push_back(&c.Ic.m);
-      vec(c.Ic.h);
-      for(const Mat3 * M : {&c.Ic.I, &c.Idc.J})
-        for(int r = 0; r < 3; ++r)
-          for(int col = r; col < 3; ++col) in.push_back(&(*M)(r, col));
-      vec(c.Idc.hd);
-      for(std::size_t i = 0; i < in.size(); ++i) b.line(fmt::format("ct_in[{}][{}] = {};", i, l, Block::text(*in[i])));
-    }
-    if(lanes > laneJoint.size())
-      b.line(fmt::format("for(auto & row : ct_in) for(int k = {}; k < {}; ++k) row[k] = S(0);", laneJoint.size(), lanes));
+    const std::size_t lanes = (laneJoint_.size() + kBodyPad - 1) / kBodyPad * kBodyPad;
+    b.comment(fmt::format("rows u, b and yaQ, yvQ, yaA, dFq, dFa of the one-dof joints, across joints (detail::column_terms; "
+                          "lanes {} to {}: zero)", laneJoint_.size(), lanes - 1));
+    if(lanes > laneJoint_.size())
+      b.line(fmt::format("for(auto & row : ct_in) for(int k = {}; k < {}; ++k) row[k] = S(0);", laneJoint_.size(), lanes));
     b.line("detail::column_terms<S>(ct_in, ct_out);");
-    if(stashOn) b.line("detail::opaque(ct_out);");
+    for(std::size_t l = 0; l < laneJoint_.size(); ++l)
+    {
+      const std::size_t j = laneJoint_[l];
+      const int row = rm.joints[j].vIndex;
+      Force uk, bkk;
+      for(int z = 0; z < 3; ++z)
+      {
+        uk.n[z] = Scalar::var(fmt::format("ct_out[{}][{}]", 30 + z, l));
+        uk.f[z] = Scalar::var(fmt::format("ct_out[{}][{}]", 33 + z, l));
+        bkk.n[z] = Scalar::var(fmt::format("ct_out[{}][{}]", 36 + z, l));
+        bkk.f[z] = Scalar::var(fmt::format("ct_out[{}][{}]", 39 + z, l));
+      }
+      if(blocks)
+      {
+        const std::vector<Scalar *> e{&uk.n[0],  &uk.n[1],  &uk.n[2],  &uk.f[0],  &uk.f[1],  &uk.f[2],
+                                      &bkk.n[0], &bkk.n[1], &bkk.n[2], &bkk.f[0], &bkk.f[1], &bkk.f[2]};
+        for(std::size_t x = 0; x < e.size(); ++x)
+        {
+          const std::string slot = fmt::format("pair_ub({}, {})", row, x);
+          b.line(fmt::format("{} = {};", slot, Block::text(*e[x])));
+          *e[x] = Scalar::var(slot);
+        }
+      }
+      u_[j][0] = uk;
+      b_[j][0] = bkk;
+    }
+  }
+  if(stashOn)
+  {
+    std::vector<std::string> arrays =
+        blocks ? std::vector<std::string>{"pair_ub.data()", "pair_sm.data()"} : std::vector<std::string>{"pair_u", "pair_b", "pair_s"};
+    arrays.push_back("pair_j");
+    if(!laneJoint_.empty()) arrays.push_back("ct_out");
+    for(const std::string & a : arrays) b.line(fmt::format("detail::opaque({});", a));
   }
   for(std::size_t j = 0; j < n; ++j)
   {
@@ -532,9 +573,9 @@ void DerivativePairs::columns()
       const bool needDF = p >= 0 || !forward;
       Motion yvQ, yaQ, yaA;
       Force dFq, dFa;
-      if(lane[j] >= 0)
+      if(lane_[j] >= 0)
       {
-        const auto v = [&](int row) { return Scalar::var(fmt::format("ct_out[{}][{}]", row, lane[j])); };
+        const auto v = [&](int row) { return Scalar::var(fmt::format("ct_out[{}][{}]", row, lane_[j])); };
         for(int i = 0; i < 3; ++i)
         {
           yaQ.w[i] = v(i);

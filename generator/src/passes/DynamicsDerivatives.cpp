@@ -469,7 +469,15 @@ void DerivativePairs::joint(int k, const SubtreeSums & c)
   p = PairJoint{w_[i].v, w_[i].a, c};
   if(!stashOn_) return;
   std::vector<Scalar *> e;
-  for(Vec3 * x : {&p.v.w, &p.v.v, &p.a.w, &p.a.v, &p.c.Ic.h, &p.c.Idc.hd, &p.c.Hc.n, &p.c.Hc.f, &p.c.Gc.n, &p.c.Gc.f})
+  for(Vec3 * x : {&p.v.w, &p.v.v, &p.a.w, &p.a.v})
+    for(int z = 0; z < 3; ++z) e.push_back(&(*x)[z]);
+  // (a lane's sums: read by column_terms only, from ct_in)
+  if(lane >= 0)
+  {
+    stashScalars(b, "pair_j", k, e);
+    return;
+  }
+  for(Vec3 * x : {&p.c.Ic.h, &p.c.Idc.hd, &p.c.Hc.n, &p.c.Hc.f, &p.c.Gc.n, &p.c.Gc.f})
     for(int z = 0; z < 3; ++z) e.push_back(&(*x)[z]);
   e.push_back(&p.c.Ic.m);
   // symmetric 3x3: the upper triangle, the lower one mirrors it

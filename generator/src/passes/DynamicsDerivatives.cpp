@@ -63,10 +63,12 @@ InertiaRate add(Block & b, const InertiaRate & x, const InertiaRate & y, const s
 Motion zeroMotion() { return Motion::zero(); }
 
 /// From this many moving joints on, subtreeSums computes the per-body terms across bodies (SIMD
-/// lanes, detail::world_body_terms) rather than as straight-line code per body: the
-/// inverse_dynamics_derivatives of talos_reduced + free base (33 joints) 5.70 -> 4.96 us with g++ 12,
-/// 6.31 -> 4.81 us with clang++ 14 (AVX-512, medians of 7 alternating runs); solo12 + free base
-/// (13 joints) 1.90 -> 1.96 us (g++), 1.89 -> 1.58 us (clang++).
+/// lanes, detail::world_body_terms) rather than as straight-line code per body, and DerivativePairs
+/// the rows and column terms of the one-dof joints across joints (detail::column_terms): the
+/// inverse_dynamics_derivatives of talos_reduced + free base (33 joints) 5.70 -> 4.96 us (bodies)
+/// -> 3.74-4.08 us (joints) with g++ 12, 6.31 -> 4.81 -> 3.84 us with clang++ 14; solo12 + free base
+/// (13 joints) 1.90 -> 1.96 -> 1.33 us (g++), 1.89 -> 1.58 -> 1.56 us (clang++) (AVX-512, own
+/// program, medians of 7 alternating runs; bench/results/2026-11-29-AMD-EPYC-pinocchio-lanes.md).
 constexpr std::size_t kBodiesAcross = 8;
 /// The bodies' arrays have a multiple of this many lanes (8 doubles: AVX-512's packet).
 constexpr std::size_t kBodyPad = 8;

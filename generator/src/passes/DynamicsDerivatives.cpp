@@ -602,24 +602,24 @@ void DerivativePairs::columns()
       }
       else
       {
-      yvQ = cross(b, wv, sm, h + "yv");
-      yaQ = add(b, cross(b, aw, sm, h + "axs"), cross(b, wv, yvQ, h + "wxyv"), h + "ya");
-      // sdot_m = vCarrier x s_m; of a 1-dof joint carried by its body v_j x s_m = (w + s_m alpha_m) x s_m
-      // = w x s_m, so yaA = 2 yvQ
-      yaA = forward && w[j].s.size() == 1 ? scale(b, Scalar::constant(2.0), yvQ, h + "yaA")
-                                          : add(b, cross(b, vCarrier, sm, h + "sd"), yvQ, h + "yaA");
-      // dF of the subtree of j (for the ancestors and for j's own dofs when not carried):
-      // dFq = s x* Gc + Ic yaQ + Bc yvQ, dFa = Ic yaA + Bc s, with Bc y = dIc y + y x* Hc
-      if(needDF)
-      {
-        const SubtreeSums & cj = pj[j].c;
-        dFq = cg::add(b, cg::add(b, crossDual(b, sm, cj.Gc, h + "sxG"), cg::apply(b, cj.Ic, yaQ, h + "Iya"), h + "dFq1"),
-                      cg::add(b, apply(b, cj.Idc, yvQ, h + "Idyv"), crossDual(b, yvQ, cj.Hc, h + "yvxH"), h + "dFq2"), h + "dFq");
-        // dIc s + s x* Hc = b_m + 2 s x* Hc (b_m: the row of the column's own dof)
-        const Force sxH = crossDual(b, sm, cj.Hc, h + "sxH");
-        dFa = cg::add(b, cg::apply(b, cj.Ic, yaA, h + "IyaA"),
-                      cg::add(b, bk[j][d], cg::add(b, sxH, sxH, h + "2sxH"), h + "dFa2"), h + "dFa");
-      }
+        yvQ = cross(b, wv, sm, h + "yv");
+        yaQ = add(b, cross(b, aw, sm, h + "axs"), cross(b, wv, yvQ, h + "wxyv"), h + "ya");
+        // sdot_m = vCarrier x s_m; of a 1-dof joint carried by its body v_j x s_m = (w + s_m alpha_m) x s_m
+        // = w x s_m, so yaA = 2 yvQ
+        yaA = forward && w[j].s.size() == 1 ? scale(b, Scalar::constant(2.0), yvQ, h + "yaA")
+                                            : add(b, cross(b, vCarrier, sm, h + "sd"), yvQ, h + "yaA");
+        // dF of the subtree of j (for the ancestors and for j's own dofs when not carried):
+        // dFq = s x* Gc + Ic yaQ + Bc yvQ, dFa = Ic yaA + Bc s, with Bc y = dIc y + y x* Hc
+        if(needDF)
+        {
+          const SubtreeSums & cj = pj[j].c;
+          dFq = cg::add(b, cg::add(b, crossDual(b, sm, cj.Gc, h + "sxG"), cg::apply(b, cj.Ic, yaQ, h + "Iya"), h + "dFq1"),
+                        cg::add(b, apply(b, cj.Idc, yvQ, h + "Idyv"), crossDual(b, yvQ, cj.Hc, h + "yvxH"), h + "dFq2"), h + "dFq");
+          // dIc s + s x* Hc = b_m + 2 s x* Hc (b_m: the row of the column's own dof)
+          const Force sxH = crossDual(b, sm, cj.Hc, h + "sxH");
+          dFa = cg::add(b, cg::apply(b, cj.Ic, yaA, h + "IyaA"),
+                        cg::add(b, bk[j][d], cg::add(b, sxH, sxH, h + "2sxH"), h + "dFa2"), h + "dFa");
+        }
       }
       // the subtree of j: joints i >= j whose support path contains j; as one block of rows
       // [first, first + rows) of UB times Yq = [yaQ; yvQ] and Ya = [yaA; s] when its dofs are

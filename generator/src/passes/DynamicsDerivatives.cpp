@@ -73,6 +73,18 @@ constexpr std::size_t kBodiesAcross = 8;
 /// The bodies' arrays have a multiple of this many lanes (8 doubles: AVX-512's packet).
 constexpr std::size_t kBodyPad = 8;
 
+/// count rounded up to whole lanes of kBodyPad
+std::size_t padToLanes(std::size_t count)
+{
+  return (count + kBodyPad - 1) / kBodyPad * kBodyPad;
+}
+
+/// lanes [count, lanes) of every row of the lane array `name` set to zero (nothing when none)
+void zeroPaddingLanes(Block & b, const std::string & name, std::size_t count, std::size_t lanes)
+{
+  if(lanes > count) b.line(fmt::format("for(auto & row : {}) for(int k = {}; k < {}; ++k) row[k] = S(0);", name, count, lanes));
+}
+
 /// x m
 Motion scale(Block & b, const Scalar & x, const Motion & m, const std::string & hint)
 {
@@ -127,7 +139,7 @@ struct BodyTerms
 std::vector<BodyTerms> bodyTermsAcrossBodies(Block & b, const RobotModel & rm, const std::vector<Xform> & X0, const std::vector<WorldBody> & w)
 {
   const std::size_t n = rm.joints.size();
-  const std::size_t lanes = (n + kBodyPad - 1) / kBodyPad * kBodyPad;
+  const std::size_t lanes = padToLanes(n);
   b.comment(fmt::format("world I, I v, I a + v x* I v and dI/dt of every body, across bodies (detail::world_body_terms; "
                         "lanes {} to {}: zero)", n, lanes - 1));
   b.line(fmt::format("S wb_in[24][{}];", lanes));
@@ -152,7 +164,7 @@ std::vector<BodyTerms> bodyTermsAcrossBodies(Block & b, const RobotModel & rm, c
         for(int i = 0; i < 3; ++i) in.push_back(&(*x)[i]);
     for(std::size_t i = 0; i < in.size(); ++i) b.line(fmt::format("wb_in[{}][{}] = {};", i, k, Block::text(*in[i])));
   }
-  if(lanes > n) b.line(fmt::format("for(auto & row : wb_in) for(int k = {}; k < {}; ++k) row[k] = S(0);", n, lanes));
+  zeroPaddingLanes(b, "wb_in", n, lanes);
   std::string table;
   for(const std::string & row : rows) table += (table.empty() ? "{" : ", {") + row + "}";
   b.line(fmt::format("static constexpr double wb_inertia[10][{}] = {{{}}};", lanes, table));
@@ -383,7 +395,7 @@ DerivativePairs::DerivativePairs(PassContext & ctx, const std::vector<WorldBody>
     }
   if(!laneJoint_.empty())
   {
-    const std::size_t lanes = (laneJoint_.size() + kBodyPad - 1) / kBodyPad * kBodyPad;
+    const std::size_t lanes = padToLanes(laneJoint_.size());
     b.line(fmt::format("S ct_in[49][{}];", lanes));
     b.line(fmt::format("S ct_out[42][{}];", lanes));
   }
@@ -519,11 +531,10 @@ void DerivativePairs::columns()
   // (blocks) or read from ct_out
   if(!laneJoint_.empty())
   {
-    const std::size_t lanes = (laneJoint_.size() + kBodyPad - 1) / kBodyPad * kBodyPad;
+    const std::size_t lanes = padToLanes(laneJoint_.size());
     b.comment(fmt::format("rows u, b and yaQ, yvQ, yaA, dFq, dFa of the one-dof joints, across joints (detail::column_terms; "
                           "lanes {} to {}: zero)", laneJoint_.size(), lanes - 1));
-    if(lanes > laneJoint_.size())
-      b.line(fmt::format("for(auto & row : ct_in) for(int k = {}; k < {}; ++k) row[k] = S(0);", laneJoint_.size(), lanes));
+    zeroPaddingLanes(b, "ct_in", laneJoint_.size(), lanes);
     b.line("detail::column_terms<S>(ct_in, ct_out);");
     for(std::size_t l = 0; l < laneJoint_.size(); ++l)
     {

@@ -51,7 +51,8 @@ std::map<std::string, std::string> preludeValues(const RobotModel & rm, const st
   v["namespace"] = coupled ? ns + "::independent" : ns;
   v["detail_sincos"] = templateText("detail_sincos.hpp.in"); // detail::sincos_all (codegen/SinCosBatch.h)
   v["detail_lanes"] = templateText("detail_lanes.hpp.in");   // detail::Lanes<S> (one state, or a pack: batch.hpp)
-  v["detail_inline"] = templateText("detail_inline.hpp.in"); // RBDGEN_INLINE (the shared passes)
+  v["detail_macros"] = templateText("detail_macros.hpp.in"); // RBDGEN_INLINE, RBDGEN_INLINE_LAMBDA, RBDGEN_NOINLINE
+  v["detail_inline"] = templateText("detail_inline.hpp.in"); // detail:: passes shared by the functions
   if(derivatives) v["detail_opaque"] = templateText("detail_opaque.hpp.in"); // detail::opaque (derivatives)
   v.merge(robotTemplateValues(rm)); // nq, nv, nbodies, nframes, Body enum, names
   // NS::model: the constants the emitted code reads by name (passes::treeXform, linkXform, bodyInertia)

@@ -69,7 +69,12 @@ Motion zeroMotion() { return Motion::zero(); }
 /// -> 3.74-4.08 us (joints) with g++ 12, 6.31 -> 4.81 -> 3.84 us with clang++ 14; solo12 + free base
 /// (13 joints) 1.90 -> 1.96 -> 1.33 us (g++), 1.89 -> 1.58 -> 1.56 us (clang++) (AVX-512, own
 /// program, medians of 7 alternating runs; bench/results/2026-11-29-AMD-EPYC-pinocchio-lanes.md).
-constexpr std::size_t kBodiesAcross = 8;
+/// From 4 rather than 8 since the code's size counts as much as its operations: ur5 (6 joints) in
+/// lanes has an inverse_dynamics_derivatives of 19 KB instead of 29-32 KB, and its
+/// forward_dynamics_derivatives (with nonlinear_effects, the factors and the products, ~38 KB in all
+/// instead of ~50, against a 32 KB instruction cache) 808 -> 700 ns with g++ 12, 775 -> 583 ns with
+/// clang++ 14, though the ID derivatives alone go 342 -> 381-390 ns (medians of 11 and 7 alternating runs).
+constexpr std::size_t kBodiesAcross = 4;
 /// The bodies' arrays have a multiple of this many lanes (8 doubles: AVX-512's packet).
 constexpr std::size_t kBodyPad = 8;
 

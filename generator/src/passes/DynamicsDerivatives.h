@@ -20,7 +20,7 @@
 //                 (w, a_w: of j's parent; sdot_m = v_j x s_m, which is w x s_m for a 1-dof joint)
 //                 and for k on a strict ancestor a of j: s_k . dF_j (the force change of j's subtree),
 //                 dFa_m = Ic_j yaA + Bc_j s_m = Ic_j yaA + b_m + 2 s_m x* Hc_j.
-//                 On trees of 8 joints or more, the rows u_k, b_k of the one-dof joints with a
+//                 On trees of 4 joints or more, the rows u_k, b_k of the one-dof joints with a
 //                 parent and yaQ, yvQ, yaA, dFq, dFa of their columns are computed first, in SIMD
 //                 lanes across joints (detail::column_terms; inputs written by joint()).
 //                 With u_k, b_k as the rows of UB (nv x 12) and the s_k as the rows of SM (nv x 6), a

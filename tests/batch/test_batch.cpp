@@ -164,7 +164,10 @@ double growth(Growth g, double cond)
 
 /// Bound of the two summation orders of -Minv dID for output o of forward_dynamics_derivatives
 /// (o = 1: dID = dtau_dq, o = 2: dtau_dalpha, at alphaD = the output's alphaD): per entry
-/// 1.01 nv eps sum_k |Minv_ik| |dID_kj|.
+/// 1.01 nv eps sum_k |Minv_ik| |dID_kj|. |dID_kj| is the larger of inverse_dynamics_derivatives'
+/// entry and of -(Minv^-1 out_o)_kj: the dID that forward_dynamics_derivatives forms itself (below
+/// 24 dofs from its own world passes, the bias accelerations and forces moved by alphaD) sums other
+/// roundings, and an entry that is 0 in one may be ~1e-17 of its terms in the other.
 template<class T>
 std::vector<T> productBound(const BatchRobot & r, const std::vector<BatchFunction<T>> & fns, const std::vector<const T *> & in,
                             const std::vector<T *> & out, std::size_t N, int o)
@@ -181,9 +184,11 @@ std::vector<T> productBound(const BatchRobot & r, const std::vector<BatchFunctio
   for(std::size_t s = 0; s < N; ++s)
   {
     const std::size_t at = s * static_cast<std::size_t>(nv * nv);
-    const Eigen::Map<const M> Minv(out[3] + at, nv, nv), dID((o == 1 ? dq : da).data() + at, nv, nv);
-    Eigen::Map<M>(bound.data() + at, nv, nv) =
-        T(1.01) * T(nv) * std::numeric_limits<T>::epsilon() * (Minv.cwiseAbs() * dID.cwiseAbs());
+    const Eigen::Map<const M> Minv(out[3] + at, nv, nv), dID((o == 1 ? dq : da).data() + at, nv, nv), dA(out[o] + at, nv, nv);
+    using Md = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    const Md Mdx = Minv.template cast<double>().inverse().eval() * dA.template cast<double>();
+    const M dIDmax = dID.cwiseAbs().cwiseMax(Mdx.cwiseAbs().template cast<T>());
+    Eigen::Map<M>(bound.data() + at, nv, nv) = T(1.01) * T(nv) * std::numeric_limits<T>::epsilon() * (Minv.cwiseAbs() * dIDmax);
   }
   return bound;
 }

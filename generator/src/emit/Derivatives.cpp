@@ -1,6 +1,7 @@
 // Derivatives of the dynamics: d tau/dq, d tau/dalpha by the world-frame passes of
 // passes/DynamicsDerivatives.h, and the factors of H that forward_dynamics_derivatives() solves with.
 #include <algorithm>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -20,6 +21,54 @@ namespace
 void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std::vector<WorldBody> & w, const Vec3 & r0,
                             const SceneEffects & fx, std::size_t c);
 
+/// The world frame of the derivative passes: poses (and body velocities when asked), their origin
+/// r0 and a_0 = [0; -g].
+struct WorldFrame
+{
+  MotionState m;
+  Vec3 r0;
+  bool shifted = false;  ///< r0 is not the world origin
+  std::vector<Xform> X0; ///< world poses with the origin at r0
+  Motion a0;
+};
+
+WorldFrame worldFrame(PassContext & ctx, const std::optional<Eigen::Vector3d> & gravity, bool bodyVelocities)
+{
+  Block & b = ctx.block();
+  const RobotModel & rm = ctx.model();
+  WorldFrame fr;
+  fr.m = forwardMotion(ctx, MotionRequest::make(true, bodyVelocities), ctx.allJoints());
+  // Origin of the passes: world axes at the first root joint's body origin r0 (a floating base 1e4 m
+  // from the world origin, or an arm mounted 1 km away, would cost ~|r0| u in the moments otherwise);
+  // d tau does not depend on the origin. a_0 = [0; -g] is the same at every point.
+  fr.r0 = !rm.joints.empty() && rm.joints.front().parent < 0 ? fr.m.X0.front().r : Vec3::zero();
+  fr.shifted = !(fr.r0[0].isZero() && fr.r0[1].isZero() && fr.r0[2].isZero());
+  fr.X0 = fr.m.X0;
+  if(fr.shifted)
+    for(std::size_t k = 0; k < rm.joints.size(); ++k) // (the first root joint's is r0 - r0 = 0)
+      fr.X0[k].r = k == 0 ? Vec3::zero() : sub(b, fr.m.X0[k].r, fr.r0, rm.joints[k].tag + "_r0");
+  fr.a0 = Motion::zero();
+  for(int i = 0; i < 3 && gravity; ++i) fr.a0.v[i] = Scalar::constant(-(*gravity)[i]);
+  return fr;
+}
+
+/// The entries of derivativePairs as assignments to out.dtau_dq and out.dtau_dalpha (out: `d` or `id`).
+void emitDerivativeEntries(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
+                           const std::optional<Eigen::Vector3d> & gravity, const std::vector<Force> & fext, const std::string & out)
+{
+  Block & b = ctx.block();
+  derivativePairs(ctx, w, c, gravity.value_or(Eigen::Vector3d::Zero()), fext,
+                  [&](int r, int col, const Scalar & dq, const Scalar & da) {
+                    if(!dq.isZero()) b.line(fmt::format("{}.dtau_dq({}, {}) = {};", out, r, col, Block::text(dq)));
+                    if(!da.isZero()) b.line(fmt::format("{}.dtau_dalpha({}, {}) = {};", out, r, col, Block::text(da)));
+                  },
+                  [&](int first, int rows, int col, const std::string & dq, const std::string & da) {
+                    for(const auto & [m, e] : {std::pair{"dtau_dq", &dq}, std::pair{"dtau_dalpha", &da}})
+                      if(!e->empty())
+                        b.line(fmt::format("{}.{}.col({}).template segment<{}>({}) = {};", out, m, col, rows, first, *e));
+                  });
+}
+
 /// d.dtau_dq and d.dtau_dalpha of the rigid-body terms: gravity (or none), velocity terms (or
 /// none), and the world wrenches of the bodies in wrenchBodies read from `wrenches[w]` (held constant).
 void emitRigidBodyDerivatives(Block & b, const RobotModel & rm, const std::optional<Eigen::Vector3d> & gravity,
@@ -29,20 +78,9 @@ void emitRigidBodyDerivatives(Block & b, const RobotModel & rm, const std::optio
   const bool anyContact = contacts && !contacts->contacts.empty();
   // poses (and the body velocities the contacts read); the world velocities and accelerations of
   // the rigid-body terms come from worldBodies' own recursion
-  const MotionState m = forwardMotion(ctx, MotionRequest::make(true, anyContact), ctx.allJoints());
-  // Origin of the passes: world axes at the first root joint's body origin r0 (a floating base 1e4 m
-  // from the world origin, or an arm mounted 1 km away, would cost ~|r0| u in the moments otherwise);
-  // d tau does not depend on the origin. a_0 = [0; -g] is the same at every point.
-  const Vec3 r0 = !rm.joints.empty() && rm.joints.front().parent < 0 ? m.X0.front().r : Vec3::zero();
-  const bool shifted = !(r0[0].isZero() && r0[1].isZero() && r0[2].isZero());
-  std::vector<Xform> X0 = m.X0;
-  if(shifted)
-    for(std::size_t k = 0; k < rm.joints.size(); ++k) // (the first root joint's is r0 - r0 = 0)
-      X0[k].r = k == 0 ? Vec3::zero() : sub(b, m.X0[k].r, r0, rm.joints[k].tag + "_r0");
-  Motion a0 = Motion::zero();
-  for(int i = 0; i < 3 && gravity; ++i) a0.v[i] = Scalar::constant(-(*gravity)[i]);
+  const WorldFrame fr = worldFrame(ctx, gravity, anyContact);
   // the rigid-body terms see alpha = 0 without velocity terms; the contacts see the true velocities
-  const std::vector<WorldBody> w = worldBodies(ctx, X0, velocityTerms, a0);
+  const std::vector<WorldBody> w = worldBodies(ctx, fr.X0, velocityTerms, fr.a0);
   std::vector<Force> fext;
   if(!wrenchBodies.empty())
   {
@@ -53,24 +91,15 @@ void emitRigidBodyDerivatives(Block & b, const RobotModel & rm, const std::optio
       const int o = rm.bodies[static_cast<std::size_t>(wrenchBodies[k])].owner;
       const std::string slot = fmt::format("wrenches[{}]", k);
       Force wk{vec3Var(slot, 0), vec3Var(slot, 3)};
-      if(shifted) wk.n = sub(b, wk.n, cross(b, r0, wk.f, fmt::format("w{}_r0xf", k)), fmt::format("w{}_n0", k));
+      if(fr.shifted) wk.n = sub(b, wk.n, cross(b, fr.r0, wk.f, fmt::format("w{}_r0xf", k)), fmt::format("w{}_n0", k));
       for(int a = o; a >= 0; a = rm.joints[static_cast<std::size_t>(a)].parent)
         fext[static_cast<std::size_t>(a)] = cg::add(b, fext[static_cast<std::size_t>(a)], wk, rm.joints[static_cast<std::size_t>(a)].tag + "_Fe");
     }
   }
-  const std::vector<SubtreeSums> c = subtreeSums(ctx, X0, w);
-  derivativePairs(ctx, w, c, gravity.value_or(Eigen::Vector3d::Zero()), fext,
-                  [&](int r, int col, const Scalar & dq, const Scalar & da) {
-                    if(!dq.isZero()) b.line(fmt::format("d.dtau_dq({}, {}) = {};", r, col, Block::text(dq)));
-                    if(!da.isZero()) b.line(fmt::format("d.dtau_dalpha({}, {}) = {};", r, col, Block::text(da)));
-                  },
-                  [&](int first, int rows, int col, const std::string & dq, const std::string & da) {
-                    for(const auto & [out, e] : {std::pair{"dtau_dq", &dq}, std::pair{"dtau_dalpha", &da}})
-                      if(!e->empty())
-                        b.line(fmt::format("d.{}.col({}).template segment<{}>({}) = {};", out, col, rows, first, *e));
-                  });
+  const std::vector<SubtreeSums> c = subtreeSums(ctx, fr.X0, w);
+  emitDerivativeEntries(ctx, w, c, gravity, fext, "d");
   if(anyContact)
-    for(std::size_t ic = 0; ic < contacts->contacts.size(); ++ic) emitContactDerivatives(ctx, m, w, r0, *contacts, ic);
+    for(std::size_t ic = 0; ic < contacts->contacts.size(); ++ic) emitContactDerivatives(ctx, fr.m, w, fr.r0, *contacts, ic);
 }
 
 /// - d(J_c^T f_c)/dq and /dalpha of contact c (runtime: SceneDynamics.cpp subtractContactDerivatives,
@@ -262,6 +291,89 @@ EmittedBody fdDerivativesBody(const RobotModel & rm, const std::vector<double> &
   return finish(b);
 }
 
+/// forward_dynamics_derivatives in one body, the kinematics computed once (without external
+/// wrenches, contacts, damping and friction; those scenes call their bias and ID derivatives):
+/// the world passes of the ID derivatives at alphaD = 0 give the bias, tau_k = s_k . Gc_i for dof k
+/// of joint i, and H(k, m) = s_m . Ic_i s_k for the dofs m on k's path (the CRBA in world
+/// coordinates). After the solve, the accelerations and the subtree forces, linear in alphaD, move
+/// by Da_k = Da_p + sum s alphaD over joint k's dofs and
+///   DGc_i = sum over i's subtree of I_b Da_b = Ic_i Da_p(i) + sum over the dofs m of i's subtree
+///           of (Ic_j(m) s_m) alphaD_m,
+/// then the derivative pairs at (q, alpha, alphaD) and -H^-1 dID as in fdDerivativesBody.
+EmittedBody fusedFdDerivativesBody(const RobotModel & rm, const SceneEffects & fx)
+{
+  Block b;
+  PassContext ctx(b, rm);
+  const auto nv = static_cast<std::size_t>(rm.nv);
+  const std::size_t n = rm.joints.size();
+  const WorldFrame fr = worldFrame(ctx, fx.gravity, false);
+  std::vector<WorldBody> w = worldBodies(ctx, fr.X0, fx.velocityTerms, fr.a0, false);
+  std::vector<SubtreeSums> c = subtreeSums(ctx, fr.X0, w);
+  b.comment("H(k, m) = s_m . Ic_i s_k for the dofs m on the path of dof k (joint i); tau - bias, bias_k = s_k . Gc_i at alphaD = 0");
+  std::vector<std::vector<Scalar>> H(nv, std::vector<Scalar>(nv));
+  std::vector<Force> u(nv); // Ic_i s_k
+  std::vector<Scalar> x(nv);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const MovingJoint & mj = rm.joints[i];
+    for(std::size_t d = 0; d < w[i].s.size(); ++d)
+    {
+      const auto k = static_cast<std::size_t>(mj.vIndex) + d;
+      u[k] = cg::apply(b, c[i].Ic, w[i].s[d], fmt::format("{}_{}Hu", mj.tag, d));
+      const Scalar bias = dot(b, w[i].s[d], c[i].Gc, fmt::format("C{}", k));
+      x[k] = b.sum({Term{1.0, {Scalar::var(fmt::format("tau[{}]", k))}}, Term{-1.0, {bias}}}, fmt::format("x{}", k));
+      const auto entry = [&](const Motion & sm, std::size_t m) { H[k][m] = dot(b, sm, u[k], fmt::format("H{}_{}", k, m)); };
+      for(std::size_t e = 0; e <= d; ++e) entry(w[i].s[e], static_cast<std::size_t>(mj.vIndex) + e);
+      for(int a = mj.parent; a >= 0; a = rm.joints[static_cast<std::size_t>(a)].parent)
+      {
+        const auto ak = static_cast<std::size_t>(a);
+        for(std::size_t e = 0; e < w[ak].s.size(); ++e) entry(w[ak].s[e], static_cast<std::size_t>(rm.joints[ak].vIndex) + e);
+      }
+      if(k < fx.armature.size() && fx.armature[k] != 0.0)
+        H[k][k] = b.sum({Term{1.0, {H[k][k]}}, Term{fx.armature[k], {}}}, fmt::format("Ha{}", k));
+    }
+  }
+  const Ltdl f = emitLtdl(b, rm, std::move(H));
+  x = emitLtdlSolve(b, f, std::move(x));
+  for(std::size_t k = 0; k < nv; ++k) b.line(fmt::format("d.alphaD[{}] = {};", k, Block::text(x[k])));
+  b.comment("the world accelerations and subtree forces at alphaD: a_k += Da_k, Gc_i += DGc_i");
+  std::vector<Motion> da(n);
+  for(std::size_t i = 0; i < n; ++i) // (parents first)
+  {
+    const MovingJoint & mj = rm.joints[i];
+    Motion aJ = Motion::zero();
+    for(std::size_t d = 0; d < w[i].s.size(); ++d)
+      {
+      const Scalar & a = x[static_cast<std::size_t>(mj.vIndex) + d];
+      const std::string h = fmt::format("{}_{}Das", mj.tag, d);
+      aJ = cg::add(b, aJ, Motion{cg::scale(b, a, w[i].s[d].w, h + "w"), cg::scale(b, a, w[i].s[d].v, h + "v")}, mj.tag + "_DaJ");
+    }
+    da[i] = mj.parent < 0 ? aJ : add(b, da[static_cast<std::size_t>(mj.parent)], aJ, mj.tag + "_Da");
+    w[i].a = add(b, w[i].a, da[i], mj.tag + "_awD");
+  }
+  std::vector<Force> Y(n, Force::zero()); // sum over the dofs m of the subtree of (Ic s_m) alphaD_m
+  for(std::size_t i = n; i-- > 0;) // (children first)
+  {
+    const MovingJoint & mj = rm.joints[i];
+    for(std::size_t d = 0; d < w[i].s.size(); ++d)
+    {
+      const auto k = static_cast<std::size_t>(mj.vIndex) + d;
+      Y[i] = cg::add(b, Y[i], Force{cg::scale(b, x[k], u[k].n, fmt::format("{}_{}Yn", mj.tag, d)),
+                                    cg::scale(b, x[k], u[k].f, fmt::format("{}_{}Yf", mj.tag, d))},
+                     mj.tag + "_Y");
+    }
+    const Force dG = mj.parent < 0 ? Y[i] : cg::add(b, cg::apply(b, c[i].Ic, da[static_cast<std::size_t>(mj.parent)], mj.tag + "_IDa"), Y[i], mj.tag + "_DG");
+    c[i].Gc = cg::add(b, c[i].Gc, dG, mj.tag + "_GcD");
+    if(mj.parent >= 0) Y[static_cast<std::size_t>(mj.parent)] = cg::add(b, Y[static_cast<std::size_t>(mj.parent)], Y[i], rm.joints[static_cast<std::size_t>(mj.parent)].tag + "_Y");
+  }
+  b.line("IdDerivatives<S> id;");
+  b.line("id.dtau_dq.setZero();");
+  b.line("id.dtau_dalpha.setZero();");
+  emitDerivativeEntries(ctx, w, c, fx.gravity, {}, "id");
+  emitDerivativeSolves(b, f, nv);
+  return finish(b);
+}
+
 } // namespace
 
 EmittedBody inverseDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx)
@@ -291,6 +403,8 @@ EmittedBody inverseDynamicsDerivativesBody(const RobotModel & rm, const SceneEff
 EmittedBody forwardDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx, const std::string & biasCall,
                                             const std::string & wrenchArg)
 {
+  if(fx.wrenchBodies.empty() && fx.contacts.empty() && !fx.hasDamping() && !fx.hasFriction() && !derivativesInArrays(rm))
+    return fusedFdDerivativesBody(rm, fx);
   return fdDerivativesBody(rm, fx.armature, biasCall,
                            "inverse_dynamics_derivatives<S>(q, alpha, d.alphaD" + wrenchArg + ")");
 }

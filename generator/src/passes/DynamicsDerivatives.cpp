@@ -98,7 +98,7 @@ Motion scale(Block & b, const Scalar & x, const Motion & m, const std::string & 
 
 } // namespace
 
-std::vector<WorldBody> worldBodies(PassContext & ctx, const std::vector<Xform> & X0, bool velocity, const Motion & a0)
+std::vector<WorldBody> worldBodies(PassContext & ctx, const std::vector<Xform> & X0, bool velocity, const Motion & a0, bool acceleration)
 {
   Block & b = ctx.block();
   std::vector<WorldBody> out(ctx.model().joints.size());
@@ -118,7 +118,7 @@ std::vector<WorldBody> worldBodies(PassContext & ctx, const std::vector<Xform> &
       const int i = mj.vIndex + static_cast<int>(d);
       const std::string h = fmt::format("{}_{}", mj.tag, d);
       if(velocity) vJ = add(b, vJ, scale(b, Scalar::var(fmt::format("alpha[{}]", i)), w.s[d], h + "_vJ"), mj.tag + "_vJw");
-      aJ = add(b, aJ, scale(b, Scalar::var(fmt::format("alphaD[{}]", i)), w.s[d], h + "_aJ"), mj.tag + "_aJw");
+      if(acceleration) aJ = add(b, aJ, scale(b, Scalar::var(fmt::format("alphaD[{}]", i)), w.s[d], h + "_aJ"), mj.tag + "_aJw");
     }
     // v = v_p + vJ, a = a_p + aJ + v_p x vJ
     w.v = parent ? add(b, parent->v, vJ, mj.tag + "_vw") : vJ;
@@ -253,6 +253,12 @@ std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<Xform>
 /// (8.3-9.0 us vs 9.6-9.9 us); below it the registers win (ur5e: 650 ns in registers, 1,350 ns
 /// through the arrays).
 constexpr int kStashDofs = 24;
+
+bool derivativesInArrays(const RobotModel & rm)
+{
+  return rm.nv >= kStashDofs;
+}
+
 /// From this many rows on, a column's entries in the subtree of its joint, or in a run of consecutive
 /// ancestor dofs, are one vector expression (onBlock).
 constexpr int kBlockRows = 2;
@@ -372,7 +378,7 @@ DerivativePairs::DerivativePairs(PassContext & ctx, const std::vector<WorldBody>
   b_.resize(n);
   s_.resize(n);
   pj_.resize(n);
-  stashOn_ = rm.nv >= kStashDofs;
+  stashOn_ = derivativesInArrays(rm);
   // blocks: a column's entries over contiguous rows as one product of rows of UB = [u_k^T b_k^T]
   // (nv x 12, row k per dof) or of SM = [s_k^T] (nv x 6); on trees with a subtree of kBlockRobotRows
   // dofs or more, without external wrenches (they add a term per row)

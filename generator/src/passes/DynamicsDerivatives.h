@@ -60,8 +60,10 @@ struct SubtreeSums
 
 /// s, v, a of every moving joint's body from the world poses X0 (world axes at the origin of the
 /// passes), root to leaves: velocities from `alpha` (none: every v_k = 0), accelerations from
-/// `alphaD` and a0, the inherited acceleration of root joints ([0; -g]).
-std::vector<WorldBody> worldBodies(PassContext & ctx, const std::vector<Xform> & X0, bool velocity, const Motion & a0);
+/// `alphaD` (none: alphaD = 0, the bias accelerations) and a0, the inherited acceleration of root
+/// joints ([0; -g]).
+std::vector<WorldBody> worldBodies(PassContext & ctx, const std::vector<Xform> & X0, bool velocity, const Motion & a0,
+                                   bool acceleration = true);
 /// Leaves to root: each body's world I, h = I v, g = I a + v x* h and dI/dt, emitted where they are
 /// added into the sums over each joint's subtree (none of them stays live across the tree).
 std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<Xform> & X0, const std::vector<WorldBody> & w);
@@ -75,6 +77,9 @@ std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<Xform>
 /// column's joint, or a run of consecutive ancestor dofs) as expressions (empty: zero) over
 /// `pair_ub` (row k = [u_k; b_k]) or `pair_sm` (row k = s_k), declared and filled here, instead of
 /// one onEntry per entry. Emitted: the rows u_k, b_k of every joint (root first), then the columns.
+/// True when the derivative pairs keep their long-lived inputs in arrays and emit each column out
+/// of line (large trees: compile time).
+bool derivativesInArrays(const RobotModel & rm);
 void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
                      const Eigen::Vector3d & gravity, const std::vector<Force> & fextSums,
                      const std::function<void(int row, int col, const Scalar & dq, const Scalar & da)> & onEntry,

@@ -343,7 +343,7 @@ EmittedBody fusedFdDerivativesBody(const RobotModel & rm, const SceneEffects & f
     const MovingJoint & mj = rm.joints[i];
     Motion aJ = Motion::zero();
     for(std::size_t d = 0; d < w[i].s.size(); ++d)
-      {
+    {
       const Scalar & a = x[static_cast<std::size_t>(mj.vIndex) + d];
       const std::string h = fmt::format("{}_{}Das", mj.tag, d);
       aJ = cg::add(b, aJ, Motion{cg::scale(b, a, w[i].s[d].w, h + "w"), cg::scale(b, a, w[i].s[d].v, h + "v")}, mj.tag + "_DaJ");
@@ -362,9 +362,15 @@ EmittedBody fusedFdDerivativesBody(const RobotModel & rm, const SceneEffects & f
                                     cg::scale(b, x[k], u[k].f, fmt::format("{}_{}Yf", mj.tag, d))},
                      mj.tag + "_Y");
     }
-    const Force dG = mj.parent < 0 ? Y[i] : cg::add(b, cg::apply(b, c[i].Ic, da[static_cast<std::size_t>(mj.parent)], mj.tag + "_IDa"), Y[i], mj.tag + "_DG");
+    if(mj.parent < 0)
+    {
+      c[i].Gc = cg::add(b, c[i].Gc, Y[i], mj.tag + "_GcD");
+      continue;
+    }
+    const auto p = static_cast<std::size_t>(mj.parent);
+    const Force dG = cg::add(b, cg::apply(b, c[i].Ic, da[p], mj.tag + "_IDa"), Y[i], mj.tag + "_DG");
     c[i].Gc = cg::add(b, c[i].Gc, dG, mj.tag + "_GcD");
-    if(mj.parent >= 0) Y[static_cast<std::size_t>(mj.parent)] = cg::add(b, Y[static_cast<std::size_t>(mj.parent)], Y[i], rm.joints[static_cast<std::size_t>(mj.parent)].tag + "_Y");
+    Y[p] = cg::add(b, Y[p], Y[i], rm.joints[p].tag + "_Y");
   }
   b.line("IdDerivatives<S> id;");
   b.line("id.dtau_dq.setZero();");

@@ -69,6 +69,50 @@ void emitDerivativeEntries(PassContext & ctx, const std::vector<WorldBody> & w, 
                   });
 }
 
+/// Per joint, the sum over its subtree of the external wrenches `wrenches[w]` on wrenchBodies[w]
+/// (world axes at the origin of the passes: n - r0 x f); empty without wrenches.
+std::vector<Force> wrenchSums(PassContext & ctx, const WorldFrame & fr, const std::vector<int> & wrenchBodies)
+{
+  Block & b = ctx.block();
+  const RobotModel & rm = ctx.model();
+  std::vector<Force> fext;
+  if(wrenchBodies.empty()) return fext;
+  b.comment("wrench sums over each subtree (world axes at the origin of the passes: n - r0 x f)");
+  fext.assign(rm.joints.size(), Force::zero());
+  for(std::size_t k = 0; k < wrenchBodies.size(); ++k)
+  {
+    const int o = rm.bodies[static_cast<std::size_t>(wrenchBodies[k])].owner;
+    const std::string slot = fmt::format("wrenches[{}]", k);
+    Force wk{vec3Var(slot, 0), vec3Var(slot, 3)};
+    if(fr.shifted) wk.n = sub(b, wk.n, cross(b, fr.r0, wk.f, fmt::format("w{}_r0xf", k)), fmt::format("w{}_n0", k));
+    for(int a = o; a >= 0; a = rm.joints[static_cast<std::size_t>(a)].parent)
+      fext[static_cast<std::size_t>(a)] = cg::add(b, fext[static_cast<std::size_t>(a)], wk, rm.joints[static_cast<std::size_t>(a)].tag + "_Fe");
+  }
+  return fext;
+}
+
+/// The joint-space terms' derivatives into out.dtau_dalpha (out: `d` or `id`): damping alpha,
+/// friction alpha / sqrt(alpha^2 + v_s^2) (derivative friction v_s^2 / (.)^(3/2)).
+void emitJointSpaceDerivatives(Block & b, const RobotModel & rm, const SceneEffects & fx, const std::string & out)
+{
+  for(int i = 0; i < rm.nv; ++i)
+  {
+    const auto ii = static_cast<std::size_t>(i);
+    const double damping = ii < fx.damping.size() ? fx.damping[ii] : 0.0;
+    const double friction = ii < fx.friction.size() ? fx.friction[ii] : 0.0;
+    if(damping == 0.0 && friction == 0.0) continue;
+    std::string rhs = damping != 0.0 ? Block::literal(damping) : "";
+    if(friction != 0.0)
+    {
+      const std::string a = fmt::format("alpha[{}]", i), vs2 = Block::literal(fx.frictionVelocity * fx.frictionVelocity);
+      b.line(fmt::format("const S fr2_{} = {} * {} + {};", i, a, a, vs2));
+      const std::string fr2 = fmt::format("fr2_{}", i);
+      rhs += fmt::format("{}{} * {} / ({} * {})", rhs.empty() ? "" : " + ", Block::literal(friction), vs2, fr2, cg::lanesSqrt(fr2));
+    }
+    b.line(fmt::format("{}.dtau_dalpha({}, {}) += {};", out, i, i, rhs));
+  }
+}
+
 /// d.dtau_dq and d.dtau_dalpha of the rigid-body terms: gravity (or none), velocity terms (or
 /// none), and the world wrenches of the bodies in wrenchBodies read from `wrenches[w]` (held constant).
 void emitRigidBodyDerivatives(Block & b, const RobotModel & rm, const std::optional<Eigen::Vector3d> & gravity,
@@ -81,21 +125,7 @@ void emitRigidBodyDerivatives(Block & b, const RobotModel & rm, const std::optio
   const WorldFrame fr = worldFrame(ctx, gravity, anyContact);
   // the rigid-body terms see alpha = 0 without velocity terms; the contacts see the true velocities
   const std::vector<WorldBody> w = worldBodies(ctx, fr.X0, velocityTerms, fr.a0);
-  std::vector<Force> fext;
-  if(!wrenchBodies.empty())
-  {
-    b.comment("wrench sums over each subtree (world axes at the origin of the passes: n - r0 x f)");
-    fext.assign(rm.joints.size(), Force::zero());
-    for(std::size_t k = 0; k < wrenchBodies.size(); ++k)
-    {
-      const int o = rm.bodies[static_cast<std::size_t>(wrenchBodies[k])].owner;
-      const std::string slot = fmt::format("wrenches[{}]", k);
-      Force wk{vec3Var(slot, 0), vec3Var(slot, 3)};
-      if(fr.shifted) wk.n = sub(b, wk.n, cross(b, fr.r0, wk.f, fmt::format("w{}_r0xf", k)), fmt::format("w{}_n0", k));
-      for(int a = o; a >= 0; a = rm.joints[static_cast<std::size_t>(a)].parent)
-        fext[static_cast<std::size_t>(a)] = cg::add(b, fext[static_cast<std::size_t>(a)], wk, rm.joints[static_cast<std::size_t>(a)].tag + "_Fe");
-    }
-  }
+  const std::vector<Force> fext = wrenchSums(ctx, fr, wrenchBodies);
   const std::vector<SubtreeSums> c = subtreeSums(ctx, fr.X0, w);
   emitDerivativeEntries(ctx, w, c, gravity, fext, "d");
   if(anyContact)
@@ -291,10 +321,25 @@ EmittedBody fdDerivativesBody(const RobotModel & rm, const std::vector<double> &
   return finish(b);
 }
 
-/// forward_dynamics_derivatives in one body, the kinematics computed once (without external
-/// wrenches, contacts, damping and friction; those scenes call their bias and ID derivatives):
-/// the world passes of the ID derivatives at alphaD = 0 give the bias, tau_k = s_k . Gc_i for dof k
-/// of joint i, and H(k, m) = s_m . Ic_i s_k for the dofs m on k's path (the CRBA in world
+/// tau_k minus the bias of dof k (velocity sk) at alphaD = 0: s_k . (Gc - Fext) (fext: nullptr when
+/// none), damping alpha_k, friction alpha_k / sqrt(alpha_k^2 + v_s^2) as the scene's RNEA has them.
+std::vector<Term> biasTerms(Block & b, const SceneEffects & fx, std::size_t k, const Motion & sk, const Force & Gc, const Force * fext)
+{
+  const std::string al = fmt::format("alpha[{}]", k);
+  std::vector<Term> t{Term{1.0, {Scalar::var(fmt::format("tau[{}]", k))}}, Term{-1.0, {dot(b, sk, Gc, fmt::format("C{}", k))}}};
+  if(fext) t.push_back(Term{1.0, {dot(b, sk, *fext, fmt::format("Ce{}", k))}});
+  if(k < fx.damping.size() && fx.damping[k] != 0.0) t.push_back(Term{-fx.damping[k], {Scalar::var(al)}});
+  if(k < fx.friction.size() && fx.friction[k] != 0.0)
+    t.push_back(Term{-1.0, {b.def(fmt::format("{} * {} / {}", Block::literal(fx.friction[k]), al,
+                                              cg::lanesSqrt(fmt::format("{} * {} + {}", al, al, Block::literal(fx.frictionVelocity * fx.frictionVelocity)))),
+                                  fmt::format("fr{}", k))}});
+  return t;
+}
+
+/// forward_dynamics_derivatives in one body, the kinematics computed once (without contacts: those
+/// scenes call their bias and ID derivatives): the world passes of the ID derivatives at alphaD = 0
+/// give the bias, tau_k = s_k . (Gc_i - Fext_i) for dof k of joint i (+ the joint-space terms), and
+/// H(k, m) = s_m . Ic_i s_k for the dofs m on k's path (the CRBA in world
 /// coordinates). After the solve, the accelerations and the subtree forces, linear in alphaD, move
 /// by Da_k = Da_p + sum s alphaD over joint k's dofs and
 ///   DGc_i = sum over i's subtree of I_b Da_b = Ic_i Da_p(i) + sum over the dofs m of i's subtree
@@ -308,8 +353,11 @@ EmittedBody fusedFdDerivativesBody(const RobotModel & rm, const SceneEffects & f
   const std::size_t n = rm.joints.size();
   const WorldFrame fr = worldFrame(ctx, fx.gravity, false);
   std::vector<WorldBody> w = worldBodies(ctx, fr.X0, fx.velocityTerms, fr.a0, false);
+  const std::vector<Force> fext = wrenchSums(ctx, fr, fx.wrenchBodies);
   std::vector<SubtreeSums> c = subtreeSums(ctx, fr.X0, w);
-  b.comment("H(k, m) = s_m . Ic_i s_k for the dofs m on the path of dof k (joint i); tau - bias, bias_k = s_k . Gc_i at alphaD = 0");
+  b.comment(fmt::format("H(k, m) = s_m . Ic_i s_k for the dofs m on the path of dof k (joint i); tau - bias, bias_k = s_k . {} at "
+                        "alphaD = 0{}",
+                        fext.empty() ? "Gc_i" : "(Gc_i - Fext_i)", fx.hasDamping() || fx.hasFriction() ? " + the joint-space terms" : ""));
   std::vector<std::vector<Scalar>> H(nv, std::vector<Scalar>(nv));
   std::vector<Force> u(nv); // Ic_i s_k
   std::vector<Scalar> x(nv);
@@ -320,8 +368,7 @@ EmittedBody fusedFdDerivativesBody(const RobotModel & rm, const SceneEffects & f
     {
       const auto k = static_cast<std::size_t>(mj.vIndex) + d;
       u[k] = cg::apply(b, c[i].Ic, w[i].s[d], fmt::format("{}_{}Hu", mj.tag, d));
-      const Scalar bias = dot(b, w[i].s[d], c[i].Gc, fmt::format("C{}", k));
-      x[k] = b.sum({Term{1.0, {Scalar::var(fmt::format("tau[{}]", k))}}, Term{-1.0, {bias}}}, fmt::format("x{}", k));
+      x[k] = b.sum(biasTerms(b, fx, k, w[i].s[d], c[i].Gc, fext.empty() ? nullptr : &fext[i]), fmt::format("x{}", k));
       const auto entry = [&](const Motion & sm, std::size_t m) { H[k][m] = dot(b, sm, u[k], fmt::format("H{}_{}", k, m)); };
       for(std::size_t e = 0; e <= d; ++e) entry(w[i].s[e], static_cast<std::size_t>(mj.vIndex) + e);
       for(int a = mj.parent; a >= 0; a = rm.joints[static_cast<std::size_t>(a)].parent)
@@ -375,7 +422,8 @@ EmittedBody fusedFdDerivativesBody(const RobotModel & rm, const SceneEffects & f
   b.line("IdDerivatives<S> id;");
   b.line("id.dtau_dq.setZero();");
   b.line("id.dtau_dalpha.setZero();");
-  emitDerivativeEntries(ctx, w, c, fx.gravity, {}, "id");
+  emitDerivativeEntries(ctx, w, c, fx.gravity, fext, "id");
+  emitJointSpaceDerivatives(b, rm, fx, "id");
   emitDerivativeSolves(b, f, nv);
   return finish(b);
 }
@@ -386,30 +434,14 @@ EmittedBody inverseDynamicsDerivativesBody(const RobotModel & rm, const SceneEff
 {
   Block b;
   emitRigidBodyDerivatives(b, rm, fx.gravity, fx.velocityTerms, fx.wrenchBodies, &fx);
-  // joint-space terms: damping alpha, friction alpha / sqrt(alpha^2 + v_s^2) (derivative f v_s^2 / (.)^(3/2))
-  for(int i = 0; i < rm.nv; ++i)
-  {
-    const auto ii = static_cast<std::size_t>(i);
-    const double damping = ii < fx.damping.size() ? fx.damping[ii] : 0.0;
-    const double friction = ii < fx.friction.size() ? fx.friction[ii] : 0.0;
-    if(damping == 0.0 && friction == 0.0) continue;
-    std::string rhs = damping != 0.0 ? Block::literal(damping) : "";
-    if(friction != 0.0)
-    {
-      const std::string a = fmt::format("alpha[{}]", i), vs2 = Block::literal(fx.frictionVelocity * fx.frictionVelocity);
-      b.line(fmt::format("const S fr2_{} = {} * {} + {};", i, a, a, vs2));
-      const std::string fr2 = fmt::format("fr2_{}", i);
-      rhs += fmt::format("{}{} * {} / ({} * {})", rhs.empty() ? "" : " + ", Block::literal(friction), vs2, fr2, cg::lanesSqrt(fr2));
-    }
-    b.line(fmt::format("d.dtau_dalpha({}, {}) += {};", i, i, rhs));
-  }
+  emitJointSpaceDerivatives(b, rm, fx, "d");
   return finish(b);
 }
 
 EmittedBody forwardDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx, const std::string & biasCall,
                                             const std::string & wrenchArg)
 {
-  if(fx.wrenchBodies.empty() && fx.contacts.empty() && !fx.hasDamping() && !fx.hasFriction() && !derivativesInArrays(rm))
+  if(fx.contacts.empty() && !derivativesInArrays(rm))
     return fusedFdDerivativesBody(rm, fx);
   return fdDerivativesBody(rm, fx.armature, biasCall,
                            "inverse_dynamics_derivatives<S>(q, alpha, d.alphaD" + wrenchArg + ")");

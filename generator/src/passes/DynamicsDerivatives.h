@@ -68,6 +68,9 @@ std::vector<WorldBody> worldBodies(PassContext & ctx, const std::vector<Xform> &
 /// added into the sums over each joint's subtree (none of them stays live across the tree).
 std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<Xform> & X0, const std::vector<WorldBody> & w);
 
+/// True when the derivative pairs keep their long-lived inputs in arrays and emit each column out
+/// of line (large trees: compile time).
+bool derivativesInArrays(const RobotModel & rm);
 /// d tau/dq and d tau/dalpha entries, handed to onEntry(row, col, dq, dalpha); entries never
 /// handed over are zero. gravity: the world gravity of the forward pass (m/s^2), a_0 = [0; -gravity]
 /// (zero: none). fextSums: when not empty, per joint the sum over its subtree of the external
@@ -77,9 +80,6 @@ std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<Xform>
 /// column's joint, or a run of consecutive ancestor dofs) as expressions (empty: zero) over
 /// `pair_ub` (row k = [u_k; b_k]) or `pair_sm` (row k = s_k), declared and filled here, instead of
 /// one onEntry per entry. Emitted: the rows u_k, b_k of every joint (root first), then the columns.
-/// True when the derivative pairs keep their long-lived inputs in arrays and emit each column out
-/// of line (large trees: compile time).
-bool derivativesInArrays(const RobotModel & rm);
 void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
                      const Eigen::Vector3d & gravity, const std::vector<Force> & fextSums,
                      const std::function<void(int row, int col, const Scalar & dq, const Scalar & da)> & onEntry,

@@ -98,6 +98,17 @@ Motion scale(Block & b, const Scalar & x, const Motion & m, const std::string & 
 
 } // namespace
 
+std::string BlockEntries::into(const std::string & out) const
+{
+  std::string cs, ys;
+  for(std::size_t k = 0; k < cols.size(); ++k)
+  {
+    cs += fmt::format(", {}", cols[k]);
+    ys += (k ? ", " : "") + y[k];
+  }
+  return fmt::format("detail::rows_times<{}{}>({}, {}, {}, {{{}}});", rows, cs, out, M, first, ys);
+}
+
 std::vector<WorldBody> worldBodies(PassContext & ctx, const std::vector<Xform> & X0, bool velocity, const Motion & a0, bool acceleration)
 {
   Block & b = ctx.block();
@@ -266,9 +277,6 @@ constexpr int kBlockRows = 2;
 /// (subtrees of 1 to 7 rows) the ID derivatives ran as fast with blocks as without, and g++'s
 /// forward_dynamics_derivatives of ur5 (which calls them) 18 % slower (910 -> 1,100 ns).
 constexpr int kBlockRobotRows = 8;
-/// Blocks of rows are computed over a multiple of this many rows: Eigen picks the widest packet
-/// that divides a fixed size (18 rows: pairs of doubles; 20 rows: AVX's 4).
-constexpr int kBlockPad = 4;
 
 /// Stores the non-constant scalars in array[k][0..] and replaces them by those slots.
 void stashScalars(Block & b, const std::string & array, int k, const std::vector<Scalar *> & e)
@@ -319,15 +327,16 @@ std::vector<Scalar> components(const std::vector<std::array<const Vec3 *, 2>> & 
   return out;
 }
 
-/// detail::rows_times<padded>(M, first, {y...}) (rows [first, first + padded) of M y), its first
-/// `rows` entries; empty when every y_c is zero.
-std::string blockColumn(const std::string & M, const std::vector<Scalar> & y, int first, int rows, int padded)
+/// rows [first, first + rows) of M y, y's zero components left out
+BlockEntries blockColumn(const std::string & M, const std::vector<Scalar> & y, int first, int rows)
 {
-  if(std::all_of(y.begin(), y.end(), [](const Scalar & x) { return x.isZero(); })) return "";
-  std::string list;
-  for(const Scalar & x : y) list += (list.empty() ? "" : ", ") + Block::text(x);
-  std::string e = fmt::format("detail::rows_times<{}>({}, {}, {{{}}})", padded, M, first, list);
-  if(padded != rows) e += fmt::format(".template head<{}>()", rows);
+  BlockEntries e{M, first, rows, {}, {}};
+  for(std::size_t c = 0; c < y.size(); ++c)
+    if(!y[c].isZero())
+    {
+      e.cols.push_back(static_cast<int>(c));
+      e.y.push_back(Block::text(y[c]));
+    }
   return e;
 }
 
@@ -346,7 +355,7 @@ class DerivativePairs
 {
 public:
   using EntryFn = std::function<void(int row, int col, const Scalar & dq, const Scalar & da)>;
-  using BlockFn = std::function<void(int first, int rows, int col, const std::string & dq, const std::string & da)>;
+  using BlockFn = std::function<void(int col, const BlockEntries & dq, const BlockEntries & da)>;
   DerivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const Eigen::Vector3d & gravity,
                   const std::vector<Force> & fextSums, EntryFn onEntry, BlockFn onBlock = {});
   void joint(int k, const SubtreeSums & c);
@@ -384,14 +393,10 @@ DerivativePairs::DerivativePairs(PassContext & ctx, const std::vector<WorldBody>
   // dofs or more, without external wrenches (they add a term per row)
   for(std::size_t j = 0; j < n && onBlock_ && fextSums.empty(); ++j)
     blocks_ = blocks_ || (rm.joints[j].joint.forward() && subtreeDofs(rm, j).second >= kBlockRobotRows);
-  // (kBlockPad more rows, zero: a block of rows is computed over a multiple of kBlockPad rows, the
-  // size Eigen vectorises with its widest packets, and its first rows kept)
   if(blocks_)
   {
-    b.line(fmt::format("Eigen::Matrix<S, {}, 12> pair_ub;", rm.nv + kBlockPad));
-    b.line(fmt::format("Eigen::Matrix<S, {}, 6> pair_sm;", rm.nv + kBlockPad));
-    b.line(fmt::format("pair_ub.template bottomRows<{}>().setZero();", kBlockPad));
-    b.line(fmt::format("pair_sm.template bottomRows<{}>().setZero();", kBlockPad));
+    b.line(fmt::format("Eigen::Matrix<S, {}, 12> pair_ub;", rm.nv));
+    b.line(fmt::format("Eigen::Matrix<S, {}, 6> pair_sm;", rm.nv));
   }
   if(stashOn_ && !blocks_) b.line(fmt::format("S pair_u[{0}][6], pair_b[{0}][6], pair_s[{0}][6];", rm.nv));
   if(stashOn_) b.line(fmt::format("S pair_j[{}][43];", std::max<std::size_t>(n, 1)));
@@ -527,13 +532,9 @@ void DerivativePairs::columns()
   const std::vector<PairJoint> & pj = pj_;
   const std::vector<Force> & fextSums = fextSums_;
   const bool stashOn = stashOn_, blocks = blocks_;
-  // rows [first, first + rows) of column col: M (pair_ub or pair_sm) times yq and ya, computed over
-  // a multiple of kBlockPad rows (detail::rows_times), its first `rows` kept
+  // rows [first, first + rows) of column col: M (pair_ub or pair_sm) times yq and ya
   auto emitBlock = [&](const std::string & M, const std::vector<Scalar> & yq, const std::vector<Scalar> & ya, int first,
-                       int rows, int col) {
-    const int padded = (rows + kBlockPad - 1) / kBlockPad * kBlockPad;
-    onBlock_(first, rows, col, blockColumn(M, yq, first, rows, padded), blockColumn(M, ya, first, rows, padded));
-  };
+                       int rows, int col) { onBlock_(col, blockColumn(M, yq, first, rows), blockColumn(M, ya, first, rows)); };
   const Eigen::Vector3d & gravity = gravity_;
   // a_0 = [0; -g] as the forward pass uses it (the root's inherited acceleration)
   Motion a0 = Motion::zero();
@@ -710,7 +711,7 @@ void DerivativePairs::columns()
 void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
                      const Eigen::Vector3d & gravity, const std::vector<Force> & fextSums,
                      const std::function<void(int, int, const Scalar &, const Scalar &)> & onEntry,
-                     const std::function<void(int, int, int, const std::string &, const std::string &)> & onBlock)
+                     const std::function<void(int, const BlockEntries &, const BlockEntries &)> & onBlock)
 {
   DerivativePairs pairs(ctx, w, gravity, fextSums, onEntry, onBlock);
   for(std::size_t k = 0; k < c.size(); ++k) pairs.joint(static_cast<int>(k), c[k]);

@@ -26,8 +26,9 @@
 //                 With u_k, b_k as the rows of UB (nv x 12) and the s_k as the rows of SM (nv x 6), a
 //                 column's entries over a contiguous range of rows (j's subtree: RBDyn numbers dofs
 //                 depth first; a run of consecutive ancestor dofs, e.g. a floating base's six) are one
-//                 product UB[rows] [yaQ; yvQ], UB[rows] [yaA; s_m], SM[rows] dF_j, which Eigen vectorises
-//                 over the rows (on trees with a subtree of 8 dofs or more; an arm's entries stay scalar).
+//                 product UB[rows] [yaQ; yvQ], UB[rows] [yaA; s_m], SM[rows] dF_j, vectorised over the
+//                 rows and summed over the columns of UB or SM whose factor is not zero
+//                 (detail::rows_times; on trees with a subtree of 8 dofs or more; an arm's entries stay scalar).
 
 #include <functional>
 #include <string>
@@ -68,6 +69,20 @@ std::vector<WorldBody> worldBodies(PassContext & ctx, const std::vector<Xform> &
 /// added into the sums over each joint's subtree (none of them stays live across the tree).
 std::vector<SubtreeSums> subtreeSums(PassContext & ctx, const std::vector<Xform> & X0, const std::vector<WorldBody> & w);
 
+/// A column's entries over rows [first, first + rows) as one product M y, M a matrix the passes fill
+/// (pair_ub, pair_sm) and y zero but in the columns `cols` of M (values `y`).
+struct BlockEntries
+{
+  std::string M;
+  int first = 0, rows = 0;
+  std::vector<int> cols;
+  std::vector<std::string> y;
+
+  bool empty() const { return cols.empty(); }
+  /// the statement detail::rows_times<rows, cols...>(out, M, first, {y...}) writing out[0..rows)
+  std::string into(const std::string & out) const;
+};
+
 /// True when the derivative pairs keep their long-lived inputs in arrays and emit each column out
 /// of line (large trees: compile time).
 bool derivativesInArrays(const RobotModel & rm);
@@ -77,13 +92,12 @@ bool derivativesInArrays(const RobotModel & rm);
 /// wrenches (world, at the world origin) that the inverse dynamics subtracts, held constant: they
 /// add s_k . (s_m x* Fext_i) to the pairs whose s_k moves with joint m. onBlock (optional, not
 /// with fextSums): the entries of rows [first, first + rows) of column col (the subtree of the
-/// column's joint, or a run of consecutive ancestor dofs) as expressions (empty: zero) over
+/// column's joint, or a run of consecutive ancestor dofs) as products (empty: zero) of
 /// `pair_ub` (row k = [u_k; b_k]) or `pair_sm` (row k = s_k), declared and filled here, instead of
 /// one onEntry per entry. Emitted: the rows u_k, b_k of every joint (root first), then the columns.
 void derivativePairs(PassContext & ctx, const std::vector<WorldBody> & w, const std::vector<SubtreeSums> & c,
                      const Eigen::Vector3d & gravity, const std::vector<Force> & fextSums,
                      const std::function<void(int row, int col, const Scalar & dq, const Scalar & da)> & onEntry,
-                     const std::function<void(int first, int rows, int col, const std::string & dq, const std::string & da)> &
-                         onBlock = {});
+                     const std::function<void(int col, const BlockEntries & dq, const BlockEntries & da)> & onBlock = {});
 
 } // namespace rbdgen::passes

@@ -80,7 +80,7 @@ void emitDerivativeEntries(PassContext & ctx, const std::vector<WorldBody> & w, 
                     for(int m = 0; m < 2; ++m)
                       if(!e[m]->empty())
                       {
-                        b.line(e[m]->into(fmt::format("{}.{}.col({}).data() + {}", out, names[m], col, e[m]->first)));
+                        b.line(e[m]->into(fmt::format("{}.{}.col({})", out, names[m], col)));
                         for(int r = 0; r < e[m]->rows; ++r) mark(m, e[m]->first + r, col);
                       }
                   });

@@ -98,7 +98,12 @@ Motion scale(Block & b, const Scalar & x, const Motion & m, const std::string & 
 
 } // namespace
 
-std::string BlockEntries::into(const std::string & out) const
+/// Blocks of rows are computed over a multiple of this many rows (AVX-512's 8 doubles; Eigen
+/// vectorises a fixed size with the widest packet that divides it), the matrices of the blocks
+/// having as many zero rows past nv.
+constexpr int kBlockPad = 8;
+
+std::string BlockEntries::into(const std::string & column) const
 {
   std::string cs, ys;
   for(std::size_t k = 0; k < cols.size(); ++k)
@@ -106,7 +111,9 @@ std::string BlockEntries::into(const std::string & out) const
     cs += fmt::format(", {}", cols[k]);
     ys += (k ? ", " : "") + y[k];
   }
-  return fmt::format("detail::rows_times<{}{}>({}, {}, {}, {{{}}});", rows, cs, out, M, first, ys);
+  const int padded = (rows + kBlockPad - 1) / kBlockPad * kBlockPad;
+  return fmt::format("{}.template segment<{}>({}) = detail::rows_times<{}{}>({}, {}, {{{}}}){};", column, rows, first, padded, cs,
+                     M, first, ys, padded == rows ? "" : fmt::format(".template head<{}>()", rows));
 }
 
 std::vector<WorldBody> worldBodies(PassContext & ctx, const std::vector<Xform> & X0, bool velocity, const Motion & a0, bool acceleration)
@@ -393,10 +400,13 @@ DerivativePairs::DerivativePairs(PassContext & ctx, const std::vector<WorldBody>
   // dofs or more, without external wrenches (they add a term per row)
   for(std::size_t j = 0; j < n && onBlock_ && fextSums.empty(); ++j)
     blocks_ = blocks_ || (rm.joints[j].joint.forward() && subtreeDofs(rm, j).second >= kBlockRobotRows);
+  // (kBlockPad more rows, zero: blocks are computed over a multiple of kBlockPad rows)
   if(blocks_)
   {
-    b.line(fmt::format("Eigen::Matrix<S, {}, 12> pair_ub;", rm.nv));
-    b.line(fmt::format("Eigen::Matrix<S, {}, 6> pair_sm;", rm.nv));
+    b.line(fmt::format("Eigen::Matrix<S, {}, 12> pair_ub;", rm.nv + kBlockPad));
+    b.line(fmt::format("Eigen::Matrix<S, {}, 6> pair_sm;", rm.nv + kBlockPad));
+    b.line(fmt::format("pair_ub.template bottomRows<{}>().setZero();", kBlockPad));
+    b.line(fmt::format("pair_sm.template bottomRows<{}>().setZero();", kBlockPad));
   }
   if(stashOn_ && !blocks_) b.line(fmt::format("S pair_u[{0}][6], pair_b[{0}][6], pair_s[{0}][6];", rm.nv));
   if(stashOn_) b.line(fmt::format("S pair_j[{}][43];", std::max<std::size_t>(n, 1)));

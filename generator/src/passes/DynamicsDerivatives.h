@@ -79,8 +79,9 @@ struct BlockEntries
   std::vector<std::string> y;
 
   bool empty() const { return cols.empty(); }
-  /// the statement detail::rows_times<rows, cols...>(out, M, first, {y...}) writing out[0..rows)
-  std::string into(const std::string & out) const;
+  /// the statement assigning them to rows [first, first + rows) of `column` (an Eigen column):
+  /// column.segment<rows>(first) = detail::rows_times<padded, cols...>(M, first, {y...}).head<rows>()
+  std::string into(const std::string & column) const;
 };
 
 /// True when the derivative pairs keep their long-lived inputs in arrays and emit each column out

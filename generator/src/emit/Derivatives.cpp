@@ -64,7 +64,8 @@ void emitDerivativeEntries(PassContext & ctx, const std::vector<WorldBody> & w, 
   const char * names[2] = {"dtau_dq", "dtau_dalpha"};
   // set[m][col * nv + row]: entry (row, col) of matrix m assigned
   std::vector<bool> set[2] = {std::vector<bool>(static_cast<std::size_t>(nv * nv)), std::vector<bool>(static_cast<std::size_t>(nv * nv))};
-  const auto mark = [&](int m, int row, int col) { set[m][static_cast<std::size_t>(col * nv + row)] = true; };
+  const auto at = [&](int row, int col) { return static_cast<std::size_t>(col * nv + row); };
+  const auto mark = [&](int m, int row, int col) { set[m][at(row, col)] = true; };
   derivativePairs(ctx, w, c, gravity.value_or(Eigen::Vector3d::Zero()), fext,
                   [&](int r, int col, const Scalar & dq, const Scalar & da) {
                     const Scalar * e[2] = {&dq, &da};
@@ -88,9 +89,9 @@ void emitDerivativeEntries(PassContext & ctx, const std::vector<WorldBody> & w, 
     for(int col = 0; col < nv; ++col)
       for(int r0 = 0, r1 = 0; r0 < nv; r0 = r1)
       {
-        const bool zero = !set[m][static_cast<std::size_t>(col * nv + r0)];
-        for(r1 = r0 + 1; r1 < nv && !set[m][static_cast<std::size_t>(col * nv + r1)] == zero;) ++r1;
-        if(!zero) continue;
+        // [r0, r1): a run of rows all assigned or all not
+        for(r1 = r0 + 1; r1 < nv && set[m][at(r1, col)] == set[m][at(r0, col)];) ++r1;
+        if(set[m][at(r0, col)]) continue;
         if(r1 - r0 == 1) b.line(fmt::format("{}.{}({}, {}) = S(0);", out, names[m], r0, col));
         else b.line(fmt::format("{}.{}.col({}).template segment<{}>({}).setZero();", out, names[m], col, r1 - r0, r0));
       }

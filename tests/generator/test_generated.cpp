@@ -421,6 +421,66 @@ TEST_P(GeneratedDerivatives, MatchRuntime)
   }
 }
 
+/// The free joints whose ancestors are all fixed (a floating base): (dof offset, body index).
+std::vector<std::pair<int, int>> freeRoots(const rbd::MultiBody & mb)
+{
+  std::vector<std::pair<int, int>> roots;
+  for(int j = 0; j < mb.nrJoints(); ++j)
+  {
+    if(mb.joint(j).type() != rbd::Joint::Free || !mb.joint(j).forward()) continue;
+    bool fixedAbove = true;
+    for(int b = mb.predecessor(j); b >= 0; b = mb.parent(b))
+      fixedAbove = fixedAbove && mb.joint(b).type() == rbd::Joint::Fixed;
+    if(fixedAbove) roots.emplace_back(mb.jointPosInDof(j), mb.successor(j));
+  }
+  return roots;
+}
+
+// A floating base's pose moves the forward dynamics through gravity alone (no contacts, no world
+// wrenches): the same motion in a frame that translates, gravity turned by a rotation. Over its six
+// dofs d alphaD/dq is therefore zero but in the base's linear acceleration, which turns with gravity:
+// d alphaD_lin / d w = -[gamma]x, gamma = E g_up (E: world to base). Its linear velocity adds a
+// uniform velocity (Galilean: no force) and, alphaD being the derivative of the base-frame velocity,
+// d alphaD / d alpha_lin = -[w]x in the linear rows (a single body's v' = f/m - w x v), zero
+// elsewhere. Laws, not either code: the runtime's -H^-1 dID sums to them within rounding x
+// cond(H)^2, the generated header writes them.
+class GeneratedFloatingBaseDerivatives : public Generated
+{
+};
+
+TEST_P(GeneratedFloatingBaseDerivatives, BaseColumnsTurnWithGravity)
+{
+  Reference ref(g());
+  const auto roots = freeRoots(ref.mb());
+  ASSERT_FALSE(roots.empty());
+  ASSERT_NE(g().d.forwardDynamicsDerivatives, nullptr);
+  rbdtest::Rng rng(9);
+  const int nv = g().nv;
+  Eigen::MatrixXd fq(nv, nv), fa(nv, nv), mi(nv, nv);
+  Eigen::VectorXd ad(nv);
+  rbd::ForwardDynamicsDerivatives fdr(ref.mb());
+  for(int s = 0; s < kStates / 4; ++s)
+  {
+    ref.sample(rng);
+    const Eigen::VectorXd q = ref.q(), a = ref.alpha(), tau = ref.torque();
+    fdr.forwardDynamicsDerivatives(ref.mb(), ref.mbc);
+    g().d.forwardDynamicsDerivatives(q.data(), a.data(), tau.data(), ad.data(), fq.data(), fa.data(), mi.data());
+    const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(fdr.Minv())).eigenvalues();
+    const double grow = std::max(1.0, ev.maxCoeff() / ev.minCoeff() * 1e-3);
+    for(const auto & [o, body] : roots)
+    {
+      const Eigen::Vector3d gamma = ref.mbc.bodyPosW[static_cast<std::size_t>(body)].rotation() * ref.mbc.gravity;
+      Eigen::MatrixXd law = Eigen::MatrixXd::Zero(nv, 6), lawV = Eigen::MatrixXd::Zero(nv, 3);
+      law.block<3, 3>(o + 3, 0) = -sva::vector3ToCrossMatrix(gamma);
+      lawV.block<3, 3>(o + 3, 0) = -sva::vector3ToCrossMatrix(Eigen::Vector3d(a.segment<3>(o)));
+      EXPECT_LE(err(fq.middleCols(o, 6), law), 1e-14) << "generated (the rotation's rounding), state " << s;
+      EXPECT_LE(err(fdr.dalphaDDq().middleCols(o, 6), law), 10 * kTolDouble * grow * grow) << "runtime, state " << s;
+      EXPECT_EQ(err(fa.middleCols(o + 3, 3), lawV), 0.0) << "generated, state " << s;
+      EXPECT_LE(err(fdr.dalphaDDalpha().middleCols(o + 3, 3), lawV), 10 * kTolDouble * grow * grow) << "runtime, state " << s;
+    }
+  }
+}
+
 TEST_P(Generated, NoHeapAllocation)
 {
   Reference ref(g());
@@ -486,5 +546,16 @@ std::vector<const GeneratedRobot *> robotsWithDerivatives()
   return out;
 }
 INSTANTIATE_TEST_SUITE_P(Robots, GeneratedDerivatives, ::testing::ValuesIn(robotsWithDerivatives()), robotName);
+
+/// Those with a floating base (--floating-base) and forward dynamics.
+std::vector<const GeneratedRobot *> floatingBaseRobotsWithDerivatives()
+{
+  std::vector<const GeneratedRobot *> out;
+  for(const GeneratedRobot * r : robotsWithDerivatives())
+    if(r->floatingBase && r->d.forwardDynamicsDerivatives) out.push_back(r);
+  return out;
+}
+INSTANTIATE_TEST_SUITE_P(Robots, GeneratedFloatingBaseDerivatives, ::testing::ValuesIn(floatingBaseRobotsWithDerivatives()),
+                         robotName);
 
 } // namespace

@@ -268,6 +268,84 @@ void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std:
     }
 }
 
+/// A floating base whose columns of the forward dynamics derivatives have a closed form
+/// (emitFloatingBaseColumns): a root free joint (forward), no contacts and no wrenches (anchored in
+/// the world), no armature on its linear dofs (H's columns of those dofs are then the derivatives of
+/// tau with respect to the base's acceleration); its linear velocity columns too when those dofs have
+/// no damping and no friction either.
+struct FloatingBase
+{
+  int joint = 0;
+  bool velocityColumns = false;
+};
+
+std::vector<FloatingBase> floatingBases(const RobotModel & rm, const SceneEffects & fx)
+{
+  std::vector<FloatingBase> roots;
+  if(!fx.contacts.empty() || !fx.wrenchBodies.empty()) return roots;
+  const auto nonZero = [](const std::vector<double> & v, std::size_t i) { return i < v.size() && v[i] != 0.0; };
+  for(std::size_t k = 0; k < rm.joints.size(); ++k)
+  {
+    const MovingJoint & mj = rm.joints[k];
+    if(mj.parent >= 0 || mj.joint.type() != rbd::Joint::Free || !mj.joint.forward()) continue;
+    bool armature = false, jointSpace = false;
+    for(int d = 3; d < 6; ++d)
+    {
+      const auto i = static_cast<std::size_t>(mj.vIndex + d);
+      armature = armature || nonZero(fx.armature, i);
+      jointSpace = jointSpace || nonZero(fx.damping, i) || nonZero(fx.friction, i);
+    }
+    if(!armature) roots.push_back({static_cast<int>(k), !jointSpace});
+  }
+  return roots;
+}
+
+/// -[x]x(r, c) as a term of out(row0 + r, col0 + c) for r != c: -eps(r, i, c) x_i = (0, 1) x_z,
+/// (0, 2) -x_y, (1, 0) -x_z, (1, 2) x_x, (2, 0) x_y, (2, 1) -x_x.
+void emitMinusCross(Block & b, const std::string & out, int row0, int col0, const Vec3 & x)
+{
+  for(int r = 0; r < 3; ++r)
+    for(int c = 0; c < 3; ++c)
+    {
+      const int i = 3 - r - c;
+      if(r == c || x[i].isZero()) continue;
+      const double sign = (c - r + 3) % 3 == 1 ? 1.0 : -1.0;
+      b.line(fmt::format("{}({}, {}) = {};", out, row0 + r, col0 + c, Block::text({Term{sign, {x[i]}}})));
+    }
+}
+
+/// A floating base's columns of d alphaD/dq and d alphaD/dalpha in closed form (floatingBases; E:
+/// world to its body frame). tau(q, alpha, alphaD) = tau_0(q', alpha, alphaD + [0; gamma]), gamma
+/// = E g_up the world's upward gravity acceleration in the base frame and q' the other joints'
+/// coordinates: a step [dw; dv] of the base's pose (base frame) turns gamma by gamma x dw and moves
+/// tau no other way, so dID/dq over its dofs is [H(:, lin) [gamma]x, 0] and -H^-1 dID is
+/// -I(:, lin) [gamma]x. A base velocity step dv adds a uniform velocity (Galilean: no force) but,
+/// alphaD held, a base acceleration w x dv: dID/dalpha_lin = H(:, lin) [w]x with w the base's angular
+/// velocity, and d alphaD/dalpha_lin = -I(:, lin) [w]x (a single body: v' = f/m - w x v). Exact,
+/// where -H^-1 dID sums products that cancel to it (talos_reduced: 342 of the 1,400 column entries
+/// of the two products).
+void emitFloatingBaseColumns(Block & b, const MovingJoint & mj, const FloatingBase & fb, const Mat3 & E,
+                             const std::optional<Eigen::Vector3d> & gravity, bool velocityTerms)
+{
+  const int o = mj.vIndex;
+  b.comment(fmt::format("joint '{}' (dofs {}-{}): d alphaD/dq = -[gamma]x in rows {}-{} of columns {}-{} (gamma = E g_up){}, "
+                        "zero elsewhere",
+                        mj.name, o, o + 5, o + 3, o + 5, o, o + 2,
+                        fb.velocityColumns ? fmt::format("; d alphaD/dalpha = -[w]x in rows {}-{} of columns {}-{} (w = alpha[{}-{}])",
+                                                         o + 3, o + 5, o + 3, o + 5, o, o + 2)
+                                           : ""));
+  b.line(fmt::format("d.dalphaD_dq.template middleCols<6>({}).setZero();", o));
+  if(gravity) emitMinusCross(b, "d.dalphaD_dq", o + 3, o, mul(b, E, Vec3::constant(-*gravity), mj.tag + "_gup"));
+  if(!fb.velocityColumns) return;
+  b.line(fmt::format("d.dalphaD_dalpha.template middleCols<3>({}).setZero();", o + 3));
+  if(velocityTerms)
+  {
+    Vec3 w;
+    for(int i = 0; i < 3; ++i) w[i] = Scalar::var(fmt::format("alpha[{}]", o + i));
+    emitMinusCross(b, "d.dalphaD_dalpha", o + 3, o + 3, w);
+  }
+}
+
 /// Minv = H^-1 by row operations along the dof tree on the identity, then d alphaD = -Minv dID. In
 /// the L^T pass and the D scaling, row i has nonzeros only in the columns of i's subtree [i, end_i]:
 /// the operations use that segment. The rows are those of d.Minv's storage read as row-major (M^-1
@@ -275,7 +353,10 @@ void emitContactDerivatives(PassContext & ctx, const MotionState & m, const std:
 /// torque depends on the q and alpha of the joints on its own paths only), so each column of the
 /// product sums those rows of Minv only (detail::minus_times_tree2): talos_reduced + free base
 /// 700 of 1,444 entries.
-void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv)
+/// The columns of the floating bases (E: world to body, emitFloatingBaseColumns) are not part of the
+/// products.
+void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv, const RobotModel & rm, const SceneEffects & fx,
+                          const std::vector<std::pair<FloatingBase, Mat3>> & bases)
 {
   std::vector<std::size_t> end(nv);
   for(std::size_t i = 0; i < nv; ++i) end[i] = i;
@@ -324,18 +405,38 @@ void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv)
   }
   b.comment("d alphaD = -H^-1 dID at alphaD (dof tree: parent and last dof of the subtree of each dof)");
   b.line(fmt::format("static constexpr int dof_parent[nv] = {{{}}}, subtree_end[nv] = {{{}}};", parents, ends));
-  b.line("detail::minus_times_tree2<S, nv>(d.dalphaD_dq, d.dalphaD_dalpha, d.Minv, id.dtau_dq, id.dtau_dalpha, dof_parent, subtree_end);");
+  if(bases.empty())
+  {
+    b.line("detail::minus_times_tree2<S, nv>(d.dalphaD_dq, d.dalphaD_dalpha, d.Minv, id.dtau_dq, id.dtau_dalpha, dof_parent, subtree_end);");
+    return;
+  }
+  std::vector<bool> closedQ(nv, false), closedA(nv, false);
+  for(const auto & [fb, E] : bases)
+  {
+    const auto o = static_cast<std::size_t>(rm.joints[static_cast<std::size_t>(fb.joint)].vIndex);
+    for(std::size_t d = 0; d < 6; ++d) closedQ[o + d] = true;
+    for(std::size_t d = 3; d < 6 && fb.velocityColumns; ++d) closedA[o + d] = true;
+  }
+  const auto flags = [nv](const std::vector<bool> & v) {
+    std::string s;
+    for(std::size_t i = 0; i < nv; ++i) s += fmt::format("{}{}", i ? ", " : "", v[i] ? "true" : "false");
+    return s;
+  };
+  b.line(fmt::format("static constexpr bool dq_closed[nv] = {{{}}}, dalpha_closed[nv] = {{{}}};", flags(closedQ), flags(closedA)));
+  b.line("detail::minus_times_tree2<S, nv>(d.dalphaD_dq, d.dalphaD_dalpha, d.Minv, id.dtau_dq, id.dtau_dalpha, dof_parent, subtree_end, "
+         "dq_closed, dalpha_closed);");
+  for(const auto & [fb, E] : bases)
+    emitFloatingBaseColumns(b, rm.joints[static_cast<std::size_t>(fb.joint)], fb, E, fx.gravity, fx.velocityTerms);
 }
 
 /// alphaD = (H + diag(armature))^-1 (tau - bias) into d.alphaD, then the derivatives (biasCall
 /// empty: no bias; idCall: the inverse_dynamics_derivatives call at d.alphaD).
-EmittedBody fdDerivativesBody(const RobotModel & rm, const std::vector<double> & armature, const std::string & biasCall,
-                              const std::string & idCall)
+EmittedBody fdDerivativesBody(const RobotModel & rm, const SceneEffects & fx, const std::string & biasCall, const std::string & idCall)
 {
   Block b;
   const auto nv = static_cast<std::size_t>(rm.nv);
   if(!biasCall.empty()) b.line("const Tangent<S> C = " + biasCall + ";");
-  const Ltdl f = emitLtdl(b, rm, emitMassMatrix(b, rm, armature));
+  const Ltdl f = emitLtdl(b, rm, emitMassMatrix(b, rm, fx.armature));
   std::vector<Scalar> x(nv);
   for(std::size_t i = 0; i < nv; ++i)
   {
@@ -345,7 +446,13 @@ EmittedBody fdDerivativesBody(const RobotModel & rm, const std::vector<double> &
   x = emitLtdlSolve(b, f, std::move(x));
   for(std::size_t i = 0; i < nv; ++i) b.line(fmt::format("d.alphaD[{}] = {};", i, Block::text(x[i])));
   b.line("const IdDerivatives<S> id = " + idCall + ";");
-  emitDerivativeSolves(b, f, nv);
+  std::vector<std::pair<FloatingBase, Mat3>> bases;
+  for(const FloatingBase & fb : floatingBases(rm, fx)) // E = E_j(q) E_T: the joint's kernel, its fixed transform from the world
+  {
+    const MovingJoint & mj = rm.joints[static_cast<std::size_t>(fb.joint)];
+    bases.emplace_back(fb, compose(b, emitJointKernel(b, mj, "q").Xj, treeXform(mj), mj.tag + "_X0").E);
+  }
+  emitDerivativeSolves(b, f, nv, rm, fx, bases);
   return finish(b);
 }
 
@@ -450,7 +557,9 @@ EmittedBody fusedFdDerivativesBody(const RobotModel & rm, const SceneEffects & f
   b.line("IdDerivatives<S> id;");
   emitDerivativeEntries(ctx, w, c, fx.gravity, fext, "id");
   emitJointSpaceDerivatives(b, rm, fx, "id");
-  emitDerivativeSolves(b, f, nv);
+  std::vector<std::pair<FloatingBase, Mat3>> bases;
+  for(const FloatingBase & fb : floatingBases(rm, fx)) bases.emplace_back(fb, fr.X0[static_cast<std::size_t>(fb.joint)].E);
+  emitDerivativeSolves(b, f, nv, rm, fx, bases);
   return finish(b);
 }
 
@@ -469,7 +578,7 @@ EmittedBody forwardDynamicsDerivativesBody(const RobotModel & rm, const SceneEff
 {
   if(fx.contacts.empty() && !derivativesInArrays(rm))
     return fusedFdDerivativesBody(rm, fx);
-  return fdDerivativesBody(rm, fx.armature, biasCall,
+  return fdDerivativesBody(rm, fx, biasCall,
                            "inverse_dynamics_derivatives<S>(q, alpha, d.alphaD" + wrenchArg + ")");
 }
 

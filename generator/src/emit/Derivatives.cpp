@@ -322,8 +322,8 @@ void emitMinusCross(Block & b, const std::string & out, int row0, int col0, cons
 /// -I(:, lin) [gamma]x. A base velocity step dv adds a uniform velocity (Galilean: no force) but,
 /// alphaD held, a base acceleration w x dv: dID/dalpha_lin = H(:, lin) [w]x with w the base's angular
 /// velocity, and d alphaD/dalpha_lin = -I(:, lin) [w]x (a single body: v' = f/m - w x v). Exact,
-/// where -H^-1 dID sums products that cancel to it (talos_reduced: 342 of the 1,400 column entries
-/// of the two products).
+/// where -H^-1 dID sums products that cancel to it (of the 1,400 entries of dID the two products
+/// read on talos_reduced, 342).
 void emitFloatingBaseColumns(Block & b, const MovingJoint & mj, const FloatingBase & fb, const Mat3 & E,
                              const std::optional<Eigen::Vector3d> & gravity, bool velocityTerms)
 {

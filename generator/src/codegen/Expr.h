@@ -8,6 +8,7 @@
 // printed `S(name)` where it is read as it is (a factor of a product whose other constant factors
 // are +-1, or alone); once combined with other constants it folds to a literal like any other.
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,9 @@ public:
   long calls() const { return calls_; }
   /// Emit the sin/cos of all joint angles as one vectorised call (default; see SinCosBatch.h).
   void setBatchSinCos(bool on) { batchSinCos_ = on; }
+  /// Values copied into this array's slots get their slot as home (HomeInSlots.h): for the arrays
+  /// written by assignments only (the inputs of out-of-line kernels).
+  void homeCopiesIn(const std::string & array) { homeArrays_.insert(array); }
 
 private:
   std::string fresh(const std::string & hint);
@@ -84,6 +88,7 @@ private:
   std::vector<std::string> taken_;
   long mults_ = 0, adds_ = 0, calls_ = 0;
   bool batchSinCos_ = true;
+  std::set<std::string> homeArrays_;
 };
 
 /// Scalar helpers built on Block::sum.

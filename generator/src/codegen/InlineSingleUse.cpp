@@ -1,5 +1,7 @@
 #include "InlineSingleUse.h"
 
+#include "StatementText.h"
+
 #include <algorithm>
 #include <cctype>
 #include <map>
@@ -10,45 +12,11 @@ namespace rbdgen::cg
 namespace
 {
 
-bool isStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool isPart(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
-/// The code of a line, without a trailing `// comment`.
-std::string codeOf(const std::string & l)
-{
-  const auto p = l.find("//");
-  return p == std::string::npos ? l : l.substr(0, p);
-}
-
-/// `const S name = rhs;` -> name, rhs.
-bool parseDef(const std::string & l, std::string & name, std::string & rhs)
-{
-  if(l.rfind("const S ", 0) != 0 || l.empty() || l.back() != ';') return false;
-  const auto eq = l.find(" = ");
-  if(eq == std::string::npos) return false;
-  name = l.substr(8, eq - 8);
-  rhs = l.substr(eq + 3, l.size() - eq - 4);
-  return !name.empty() && std::all_of(name.begin(), name.end(), isPart);
-}
-
-/// Positions of `name` read as a local in `text` (not a member after `.`, not qualified after `::`,
-/// not part of a longer name).
-template<typename F>
-void forEachLocal(const std::string & text, F && f)
-{
-  for(std::size_t i = 0; i < text.size();)
-  {
-    if(isStart(text[i]) && (i == 0 || !isPart(text[i - 1])))
-    {
-      std::size_t j = i;
-      while(j < text.size() && isPart(text[j])) ++j;
-      const bool member = i > 0 && (text[i - 1] == '.' || (i > 1 && text[i - 1] == ':' && text[i - 2] == ':'));
-      if(!member) f(i, j);
-      i = j;
-    }
-    else ++i;
-  }
-}
+using text::codeOf;
+using text::forEachLocal;
+using text::isPart;
+using text::isStart;
+using text::parseDef;
 
 /// Whether e calls a qualified function (`std::sin(`, `detail::Lanes<S>::sqrt(`): a qualified name
 /// followed by `(` or `<`; a named model constant (`S(model::j3.rz)`) is not a call.

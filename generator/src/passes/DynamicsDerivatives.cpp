@@ -166,6 +166,7 @@ std::vector<BodyTerms> bodyTermsAcrossBodies(Block & b, const RobotModel & rm, c
   b.comment(fmt::format("world I, I v, I a + v x* I v and dI/dt of every body, across bodies (detail::world_body_terms; "
                         "lanes {} to {}: zero)", n, lanes - 1));
   b.line(fmt::format("S wb_in[24][{}];", lanes));
+  b.homeCopiesIn("wb_in");
   b.line(fmt::format("S wb_out[30][{}];", lanes));
   auto constant = [](const Scalar & x) { return x.label().empty() ? fmt::format("{}", x.value()) : x.label(); };
   std::vector<std::string> rows(10);
@@ -410,6 +411,8 @@ DerivativePairs::DerivativePairs(PassContext & ctx, const std::vector<WorldBody>
   }
   if(stashOn_ && !blocks_) b.line(fmt::format("S pair_u[{0}][6], pair_b[{0}][6], pair_s[{0}][6];", rm.nv));
   if(stashOn_) b.line(fmt::format("S pair_j[{}][43];", std::max<std::size_t>(n, 1)));
+  // (the values these arrays copy are computed into them: HomeInSlots.h)
+  for(const char * a : {"pair_ub", "pair_sm", "pair_u", "pair_b", "pair_s", "pair_j"}) b.homeCopiesIn(a);
   // the one-dof forward joints with a parent: their rows u, b and their columns' yaQ, yvQ, yaA, dFq,
   // dFa across joints in SIMD lanes (detail::column_terms), inputs written by joint()
   lane_.assign(n, -1);
@@ -423,6 +426,7 @@ DerivativePairs::DerivativePairs(PassContext & ctx, const std::vector<WorldBody>
   {
     const std::size_t lanes = padToLanes(laneJoint_.size());
     b.line(fmt::format("S ct_in[49][{}];", lanes));
+    b.homeCopiesIn("ct_in");
     b.line(fmt::format("S ct_out[42][{}];", lanes));
   }
 }

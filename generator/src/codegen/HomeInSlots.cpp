@@ -1,0 +1,147 @@
+#include "HomeInSlots.h"
+
+#include "StatementText.h"
+
+#include <map>
+
+namespace rbdgen::cg
+{
+
+namespace
+{
+
+using text::codeOf;
+using text::forEachLocal;
+using text::isPart;
+using text::parseDef;
+
+/// `a[i][j] = x;` or `a(i, j) = x;` with a in arrays and x a name: slot "a[i][j]", its array, x.
+bool parseCopy(const std::string & l, const std::set<std::string> & arrays, std::string & slot, std::string & array,
+               std::string & name)
+{
+  std::size_t i = 0;
+  while(i < l.size() && isPart(l[i])) ++i;
+  array = l.substr(0, i);
+  if(!arrays.count(array)) return false;
+  const auto eq = l.find(" = ");
+  if(eq == std::string::npos || l.back() != ';') return false;
+  slot = l.substr(0, eq);
+  const std::string index = slot.substr(i);
+  const bool brackets = !index.empty() && index.front() == '[' && index.back() == ']';
+  const bool parens = !index.empty() && index.front() == '(' && index.back() == ')';
+  if(!brackets && !parens) return false;
+  for(const char c : index)
+    if(!(std::isdigit(static_cast<unsigned char>(c)) || c == '[' || c == ']' || c == '(' || c == ')' || c == ',' || c == ' '))
+      return false;
+  name = l.substr(eq + 3, l.size() - eq - 4);
+  return !name.empty() && std::all_of(name.begin(), name.end(), isPart) && !std::isdigit(static_cast<unsigned char>(name[0]));
+}
+
+/// The array a top-level line declares (`S a[n][m];`, `Eigen::Matrix<S, r, c> a;`), or "".
+std::string declaredArray(const std::string & l, const std::set<std::string> & arrays)
+{
+  for(const std::string & a : arrays)
+    if((l.rfind("S " + a + "[", 0) == 0 || (l.rfind("Eigen::Matrix<S, ", 0) == 0 && l.size() > a.size() + 2 &&
+                                                l.compare(l.size() - a.size() - 2, a.size() + 2, " " + a + ";") == 0)) &&
+       l.back() == ';')
+      return a;
+  return "";
+}
+
+/// l with every name of `home` read as a local (from position `from` on) replaced by its slot.
+std::string readSlots(const std::string & l, const std::map<std::string, std::string> & home, std::size_t from = 0)
+{
+  std::string out = l.substr(0, from);
+  std::size_t last = from;
+  const std::string code = codeOf(l);
+  forEachLocal(code, [&](std::size_t i, std::size_t j) {
+    if(i < from) return;
+    const auto h = home.find(code.substr(i, j - i));
+    if(h == home.end()) return;
+    out += l.substr(last, i - last) + h->second;
+    last = j;
+  });
+  return out + l.substr(last);
+}
+
+} // namespace
+
+std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, const std::set<std::string> & arrays)
+{
+  const std::size_t n = lines.size();
+  // top level: outside every brace (lambda bodies, loops)
+  std::vector<bool> top(n);
+  int depth = 0;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    top[k] = depth == 0;
+    for(const char c : codeOf(lines[k])) depth += c == '{' ? 1 : (c == '}' ? -1 : 0);
+  }
+  std::map<std::string, std::size_t> defLine;
+  std::map<std::string, int> writes; // assignments per slot, anywhere
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    std::string name, rhs, slot, array;
+    if(top[k] && parseDef(lines[k], name, rhs)) defLine.emplace(name, k);
+    std::size_t i = lines[k].find_first_not_of(' ');
+    if(i == std::string::npos) continue;
+    const std::string l = lines[k].substr(i);
+    const auto eq = l.find(" = ");
+    if(eq != std::string::npos) ++writes[l.substr(0, eq)];
+  }
+  // the first copy of each defined name into a slot written once: its home
+  std::map<std::string, std::string> home;
+  std::map<std::string, std::string> homeArray;
+  std::vector<bool> dropped(n, false);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    std::string slot, array, name;
+    if(!top[k] || !parseCopy(lines[k], arrays, slot, array, name)) continue;
+    const auto d = defLine.find(name);
+    if(d == defLine.end() || d->second > k || home.count(name) || writes[slot] != 1) continue;
+    home[name] = slot;
+    homeArray[name] = array;
+    dropped[k] = true;
+  }
+  if(home.empty()) return lines;
+  // declarations move up to the first home in their array
+  std::map<std::string, std::size_t> declLine, firstHome;
+  for(std::size_t k = 0; k < n; ++k)
+    if(top[k])
+    {
+      const std::string a = declaredArray(lines[k], arrays);
+      if(!a.empty() && !declLine.count(a)) declLine[a] = k;
+    }
+  for(const auto & [name, array] : homeArray)
+  {
+    const std::size_t k = defLine[name];
+    if(!firstHome.count(array) || k < firstHome[array]) firstHome[array] = k;
+  }
+  std::map<std::size_t, std::vector<std::string>> before; // line -> declarations moved before it
+  for(const auto & [array, k] : firstHome)
+  {
+    const auto d = declLine.find(array);
+    if(d == declLine.end() || d->second < k) continue;
+    before[k].push_back(lines[d->second]);
+    dropped[d->second] = true;
+  }
+  std::vector<std::string> out;
+  out.reserve(n);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    if(const auto b = before.find(k); b != before.end())
+      for(const std::string & l : b->second) out.push_back(l);
+    if(dropped[k]) continue;
+    std::string name, rhs;
+    if(top[k] && parseDef(lines[k], name, rhs) && home.count(name) && defLine[name] == k)
+    {
+      const std::string l = home[name] + " = " + rhs + ";";
+      out.push_back(readSlots(l, home, home[name].size() + 3));
+      continue;
+    }
+    out.push_back(readSlots(lines[k], home));
+  }
+  return out;
+}
+
+} // namespace rbdgen::cg

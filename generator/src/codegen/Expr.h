@@ -79,8 +79,13 @@ public:
   /// Emit the sin/cos of all joint angles as one vectorised call (default; see SinCosBatch.h).
   void setBatchSinCos(bool on) { batchSinCos_ = on; }
   /// Values copied into this array's slots get their slot as home (HomeInSlots.h): for the arrays
-  /// written by assignments only (the inputs of out-of-line kernels).
-  void homeCopiesIn(const std::string & array) { homeArrays_.insert(array); }
+  /// written by assignments only (the inputs of out-of-line kernels). readByElement: the array is
+  /// read slot by slot only (never whole by a kernel), so a copy of a value homed elsewhere goes.
+  void homeCopiesIn(const std::string & array, bool readByElement = false)
+  {
+    homeArrays_.insert(array);
+    if(readByElement) readByElement_.insert(array);
+  }
 
 private:
   std::string fresh(const std::string & hint);
@@ -88,7 +93,7 @@ private:
   std::vector<std::string> taken_;
   long mults_ = 0, adds_ = 0, calls_ = 0;
   bool batchSinCos_ = true;
-  std::set<std::string> homeArrays_;
+  std::set<std::string> homeArrays_, readByElement_;
 };
 
 /// Scalar helpers built on Block::sum.

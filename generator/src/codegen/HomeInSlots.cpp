@@ -64,9 +64,39 @@ std::string readSlots(const std::string & l, const std::map<std::string, std::st
   return out + l.substr(last);
 }
 
+/// l with every slot of `alias` (`a[i][j]`, `a(i, j)`, not part of a longer name) replaced by the
+/// slot it stands for.
+std::string readAliases(const std::string & l, const std::map<std::string, std::string> & alias)
+{
+  if(alias.empty()) return l;
+  std::string out;
+  std::size_t last = 0;
+  const std::string code = codeOf(l);
+  forEachLocal(code, [&](std::size_t i, std::size_t j) {
+    if(i < last) return;
+    std::size_t e = j;
+    if(e < code.size() && code[e] == '(') e = code.find(')', e);
+    else
+      while(e < code.size() && code[e] == '[')
+      {
+        const std::size_t close = code.find(']', e);
+        if(close == std::string::npos) break;
+        e = close + 1;
+        if(e >= code.size() || code[e] != '[') --e;
+      }
+    if(e == std::string::npos || e == j) return;
+    const auto a = alias.find(code.substr(i, e + 1 - i));
+    if(a == alias.end()) return;
+    out += l.substr(last, i - last) + a->second;
+    last = e + 1;
+  });
+  return out + l.substr(last);
+}
+
 } // namespace
 
-std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, const std::set<std::string> & arrays)
+std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, const std::set<std::string> & arrays,
+                                     const std::set<std::string> & readByElement)
 {
   const std::size_t n = lines.size();
   // top level: outside every brace (lambda bodies, loops)
@@ -104,6 +134,17 @@ std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, con
     dropped[k] = true;
   }
   if(home.empty()) return lines;
+  // further copies of a homed value into an array read by element only: its reads read the home
+  std::map<std::string, std::string> alias;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    std::string slot, array, name;
+    if(dropped[k] || !top[k] || !parseCopy(lines[k], arrays, slot, array, name) || !readByElement.count(array)) continue;
+    const auto h = home.find(name);
+    if(h == home.end() || writes[slot] != 1 || defLine[name] > k) continue;
+    alias[slot] = h->second;
+    dropped[k] = true;
+  }
   // declarations move up to the first home in their array
   std::map<std::string, std::size_t> declLine, firstHome;
   for(std::size_t k = 0; k < n; ++k)
@@ -136,10 +177,10 @@ std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, con
     if(top[k] && parseDef(lines[k], name, rhs) && home.count(name) && defLine[name] == k)
     {
       const std::string l = home[name] + " = " + rhs + ";";
-      out.push_back(readSlots(l, home, home[name].size() + 3));
+      out.push_back(readAliases(readSlots(l, home, home[name].size() + 3), alias));
       continue;
     }
-    out.push_back(readSlots(lines[k], home));
+    out.push_back(readAliases(readSlots(lines[k], home), alias));
   }
   return out;
 }

@@ -8,7 +8,9 @@
 // what goes is the copy: in a body of thousands of values, x was spilled to the stack where it was
 // computed and read back for the copy, or kept in a register across the statements in between.
 // The arrays are the inputs of out-of-line kernels and columns (the derivatives' lanes: written by
-// assignments only, never by a call).
+// assignments only, never by a call). A further copy of a homed value into an array of
+// `readByElement` (read slot by slot, never as a whole by a kernel) goes too: the reads of that
+// slot read the home.
 
 #include <set>
 #include <string>
@@ -17,6 +19,7 @@
 namespace rbdgen::cg
 {
 
-std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, const std::set<std::string> & arrays);
+std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, const std::set<std::string> & arrays,
+                                     const std::set<std::string> & readByElement = {});
 
 } // namespace rbdgen::cg

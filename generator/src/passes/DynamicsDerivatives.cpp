@@ -411,8 +411,10 @@ DerivativePairs::DerivativePairs(PassContext & ctx, const std::vector<WorldBody>
   }
   if(stashOn_ && !blocks_) b.line(fmt::format("S pair_u[{0}][6], pair_b[{0}][6], pair_s[{0}][6];", rm.nv));
   if(stashOn_) b.line(fmt::format("S pair_j[{}][43];", std::max<std::size_t>(n, 1)));
-  // (the values these arrays copy are computed into them: HomeInSlots.h)
-  for(const char * a : {"pair_ub", "pair_sm", "pair_u", "pair_b", "pair_s", "pair_j"}) b.homeCopiesIn(a);
+  // (the values these arrays copy are computed into them: HomeInSlots.h; the columns read pair_j
+  // slot by slot, so what it copies from another array is read there)
+  for(const char * a : {"pair_ub", "pair_sm", "pair_u", "pair_b", "pair_s"}) b.homeCopiesIn(a);
+  b.homeCopiesIn("pair_j", true);
   // the one-dof forward joints with a parent: their rows u, b and their columns' yaQ, yvQ, yaA, dFq,
   // dFa across joints in SIMD lanes (detail::column_terms), inputs written by joint()
   lane_.assign(n, -1);

@@ -563,20 +563,29 @@ void DerivativePairs::columns()
     b.comment(fmt::format("rows u, b and yaQ, yvQ, yaA, dFq, dFa of the one-dof joints, across joints (detail::column_terms; "
                           "lanes {} to {}: zero)", laneJoint_.size(), lanes - 1));
     zeroPaddingLanes(b, "ct_in", laneJoint_.size(), lanes);
-    b.line("detail::column_terms<S>(ct_in, ct_out);");
+    // the rows u, b straight into pair_ub when the lanes' dofs are its last rows, in order (the
+    // padding lanes then write zeros into its zero rows past nv)
+    const int r0 = rm.joints[laneJoint_.front()].vIndex;
+    bool direct = blocks && r0 + static_cast<int>(laneJoint_.size()) == rm.nv && static_cast<int>(lanes - laneJoint_.size()) <= kBlockPad;
+    for(std::size_t l = 0; l < laneJoint_.size() && direct; ++l) direct = rm.joints[laneJoint_[l]].vIndex == r0 + static_cast<int>(l);
+    b.line(direct ? fmt::format("detail::column_terms<S>(ct_in, ct_out, pair_ub.data() + {}, {});", r0, rm.nv + kBlockPad)
+                  : "detail::column_terms<S>(ct_in, ct_out);");
     for(std::size_t l = 0; l < laneJoint_.size(); ++l)
     {
       const std::size_t j = laneJoint_[l];
       const int row = rm.joints[j].vIndex;
       Force uk, bkk;
+      const auto out = [&](int x) {
+        return Scalar::var(direct ? fmt::format("pair_ub({}, {})", row, x) : fmt::format("ct_out[{}][{}]", 30 + x, l));
+      };
       for(int z = 0; z < 3; ++z)
       {
-        uk.n[z] = Scalar::var(fmt::format("ct_out[{}][{}]", 30 + z, l));
-        uk.f[z] = Scalar::var(fmt::format("ct_out[{}][{}]", 33 + z, l));
-        bkk.n[z] = Scalar::var(fmt::format("ct_out[{}][{}]", 36 + z, l));
-        bkk.f[z] = Scalar::var(fmt::format("ct_out[{}][{}]", 39 + z, l));
+        uk.n[z] = out(z);
+        uk.f[z] = out(3 + z);
+        bkk.n[z] = out(6 + z);
+        bkk.f[z] = out(9 + z);
       }
-      if(blocks)
+      if(blocks && !direct)
       {
         const std::vector<Scalar *> e{&uk.n[0],  &uk.n[1],  &uk.n[2],  &uk.f[0],  &uk.f[1],  &uk.f[2],
                                       &bkk.n[0], &bkk.n[1], &bkk.n[2], &bkk.f[0], &bkk.f[1], &bkk.f[2]};

@@ -89,6 +89,26 @@ TEST(HomeInSlots, CopiesIntoAnArrayReadByElementGo)
   EXPECT_EQ(homeInSlots(lines, {"in", "pj"}, {"pj"}), expected);
 }
 
+// A line declaring several arrays moves up (once) to the first home in any of them.
+TEST(HomeInSlots, ALineDeclaringSeveralArraysMovesOnce)
+{
+  const std::vector<std::string> lines = {
+      "const S a = x * y;",
+      "const S b = x + y;",
+      "S pu[2][2], pb[2][2], ps[2][2];",
+      "pb[0][0] = b;",
+      "ps[1][1] = a;",
+      "out[0] = pb[0][0] + ps[1][1];",
+  };
+  const std::vector<std::string> expected = {
+      "S pu[2][2], pb[2][2], ps[2][2];",
+      "ps[1][1] = x * y;",
+      "pb[0][0] = x + y;",
+      "out[0] = pb[0][0] + ps[1][1];",
+  };
+  EXPECT_EQ(homeInSlots(lines, {"pu", "pb", "ps"}), expected);
+}
+
 TEST(HomeInSlots, NamesAfterADotOrInLongerNamesAreNotReads)
 {
   const std::vector<std::string> lines = {

@@ -2,6 +2,7 @@
 
 #include "StatementText.h"
 
+#include <algorithm>
 #include <map>
 
 namespace rbdgen::cg
@@ -37,15 +38,31 @@ bool parseCopy(const std::string & l, const std::set<std::string> & arrays, std:
   return !name.empty() && std::all_of(name.begin(), name.end(), isPart) && !std::isdigit(static_cast<unsigned char>(name[0]));
 }
 
-/// The array a top-level line declares (`S a[n][m];`, `Eigen::Matrix<S, r, c> a;`), or "".
-std::string declaredArray(const std::string & l, const std::set<std::string> & arrays)
+/// The arrays of `arrays` a top-level line declares (`S a[n][m];`, `S a[n][m], b[n][m];`,
+/// `Eigen::Matrix<S, r, c> a;`).
+std::vector<std::string> declaredArrays(const std::string & l, const std::set<std::string> & arrays)
 {
-  for(const std::string & a : arrays)
-    if((l.rfind("S " + a + "[", 0) == 0 || (l.rfind("Eigen::Matrix<S, ", 0) == 0 && l.size() > a.size() + 2 &&
-                                                l.compare(l.size() - a.size() - 2, a.size() + 2, " " + a + ";") == 0)) &&
-       l.back() == ';')
-      return a;
-  return "";
+  std::vector<std::string> out;
+  if(l.empty() || l.back() != ';') return out;
+  if(l.rfind("Eigen::Matrix<S, ", 0) == 0)
+  {
+    const auto space = l.rfind(' ');
+    const std::string a = l.substr(space + 1, l.size() - space - 2);
+    if(arrays.count(a)) out.push_back(a);
+    return out;
+  }
+  if(l.rfind("S ", 0) != 0) return out;
+  // declarators `name[n]...` separated by ", "
+  for(std::size_t i = 2; i < l.size();)
+  {
+    std::size_t j = i;
+    while(j < l.size() && isPart(l[j])) ++j;
+    if(j == i || j == l.size() || l[j] != '[') return {};
+    if(arrays.count(l.substr(i, j - i))) out.push_back(l.substr(i, j - i));
+    while(j < l.size() && l[j] != ',' && l[j] != ';') ++j;
+    i = j + 2;
+  }
+  return out;
 }
 
 /// l with every name of `home` read as a local (from position `from` on) replaced by its slot.
@@ -111,7 +128,7 @@ std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, con
   std::map<std::string, int> writes; // assignments per slot, anywhere
   for(std::size_t k = 0; k < n; ++k)
   {
-    std::string name, rhs, slot, array;
+    std::string name, rhs;
     if(top[k] && parseDef(lines[k], name, rhs)) defLine.emplace(name, k);
     std::size_t i = lines[k].find_first_not_of(' ');
     if(i == std::string::npos) continue;
@@ -145,26 +162,30 @@ std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, con
     alias[slot] = h->second;
     dropped[k] = true;
   }
-  // declarations move up to the first home in their array
+  // declarations move up to the first home in the arrays they declare
   std::map<std::string, std::size_t> declLine, firstHome;
   for(std::size_t k = 0; k < n; ++k)
     if(top[k])
-    {
-      const std::string a = declaredArray(lines[k], arrays);
-      if(!a.empty() && !declLine.count(a)) declLine[a] = k;
-    }
+      for(const std::string & a : declaredArrays(lines[k], arrays))
+        if(!declLine.count(a)) declLine[a] = k;
   for(const auto & [name, array] : homeArray)
   {
     const std::size_t k = defLine[name];
     if(!firstHome.count(array) || k < firstHome[array]) firstHome[array] = k;
   }
-  std::map<std::size_t, std::vector<std::string>> before; // line -> declarations moved before it
+  std::map<std::size_t, std::size_t> moveTo; // declaration line -> the line it moves before
   for(const auto & [array, k] : firstHome)
   {
     const auto d = declLine.find(array);
     if(d == declLine.end() || d->second < k) continue;
-    before[k].push_back(lines[d->second]);
-    dropped[d->second] = true;
+    const auto m = moveTo.find(d->second);
+    moveTo[d->second] = m == moveTo.end() ? k : std::min(m->second, k);
+  }
+  std::map<std::size_t, std::vector<std::string>> before; // line -> declarations moved before it
+  for(const auto & [decl, k] : moveTo)
+  {
+    before[k].push_back(lines[decl]);
+    dropped[decl] = true;
   }
   std::vector<std::string> out;
   out.reserve(n);

@@ -7,8 +7,8 @@
 // came later. The arithmetic is unchanged (each value is computed by the same expression, once);
 // what goes is the copy: in a body of thousands of values, x was spilled to the stack where it was
 // computed and read back for the copy, or kept in a register across the statements in between.
-// The arrays are the inputs of out-of-line kernels and columns (the derivatives' lanes: written by
-// assignments only, never by a call). A further copy of a homed value into an array of
+// The arrays are the inputs of out-of-line kernels and columns (the derivatives' lanes): written by
+// assignments, or by a call only in slots no copy writes (padding lanes and rows). A further copy of a homed value into an array of
 // `readByElement` (read slot by slot, never as a whole by a kernel) goes too: the reads of that
 // slot read the home.
 

@@ -211,6 +211,26 @@ void registerCell(const BatchRobotInfo & r, const BatchAlgorithm<T> & a, const s
   if(wall) b->UseRealTime();
 }
 
+/// An N-state output of algorithm a (rows layout, or columns when `columns`) as one (N x outputSize)
+/// row-major array: each state's values together, its arrays (a.parts) one after the other.
+template<class T>
+std::vector<T> stateRows(const std::vector<T> & out, const BatchAlgorithm<double> & a, std::size_t N, bool columns)
+{
+  const std::vector<int> parts = a.parts.empty() ? std::vector<int>{a.outputSize} : a.parts;
+  const auto m = static_cast<std::size_t>(a.outputSize);
+  std::vector<T> rows(N * m);
+  std::size_t offset = 0; // values of a state before this part
+  for(const int part : parts)
+  {
+    const auto n = static_cast<std::size_t>(part);
+    const T * base = out.data() + N * offset;
+    for(std::size_t s = 0; s < N; ++s)
+      for(std::size_t k = 0; k < n; ++k) rows[s * m + offset + k] = columns ? base[k * N + s] : base[s * n + k];
+    offset += n;
+  }
+  return rows;
+}
+
 /// The check line of one algorithm (printed before the cells run).
 void check(const BatchRobotInfo & r, const BatchAlgorithm<double> & d, const BatchAlgorithm<float> & f, const Pools & pools)
 {
@@ -221,17 +241,15 @@ void check(const BatchRobotInfo & r, const BatchAlgorithm<double> & d, const Bat
   d.single(pools.d.at(r, 0), single.data(), N);
   d.batch(pools.d.at(r, 0), batch.data(), N, 1);
   f.batch(pools.f.at(r, 0), batchF.data(), N, 1);
-  // Layout::columns, transposed back to rows
   const ColumnWindows<double> windows(r, pools.d, N);
-  std::vector<double> columns(n), columnsAsRows(n);
+  std::vector<double> columns(n);
   d.columns(windows.at(0), columns.data(), N);
-  const auto m = static_cast<std::size_t>(d.outputSize);
-  for(std::size_t s = 0; s < N; ++s)
-    for(std::size_t k = 0; k < m; ++k) columnsAsRows[s * m + k] = columns[k * N + s];
+  const std::vector<double> singleRows = stateRows(single, d, N, false), batchRows = stateRows(batch, d, N, false);
   std::printf("check %s/%s: SIMD double vs single double %.3g, SIMD float vs single double %.3g, SIMD double columns "
               "vs rows %.3g (relative, %zu states)\n",
-              r.name, d.name, worstRelative(batch, single, N, d.outputSize), worstRelative(batchF, single, N, d.outputSize),
-              worstRelative(columnsAsRows, batch, N, d.outputSize), N);
+              r.name, d.name, worstRelative(batchRows, singleRows, N, d.outputSize),
+              worstRelative(stateRows(batchF, d, N, false), singleRows, N, d.outputSize),
+              worstRelative(stateRows(columns, d, N, true), batchRows, N, d.outputSize), N);
 }
 
 } // namespace

@@ -27,6 +27,11 @@ struct BatchAlgorithm
   void (*batch)(const Inputs<T> & in, T * out, std::size_t N, int threads); ///< NS::batch::...
   /// NS::batch::... with Layout::columns: in and out are (values x N) arrays (structure of arrays)
   void (*columns)(const Inputs<T> & in, T * out, std::size_t N);
+  /// The values of a state in several arrays (the derivatives: e.g. alphaD, then three nv x nv
+  /// matrices), their sizes in order, summing to outputSize; out holds them one after the other,
+  /// each N states long (rows: (N x size) each; columns: (size x N) each, so the whole is
+  /// (outputSize x N)). Empty: one array.
+  std::vector<int> parts = {};
 };
 
 struct BatchRobotInfo

@@ -16,8 +16,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <memory>
+#include <numeric>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -218,6 +220,11 @@ std::vector<T> stateRows(const std::vector<T> & out, const BatchAlgorithm<double
 {
   const std::vector<int> parts = a.parts.empty() ? std::vector<int>{a.outputSize} : a.parts;
   const auto m = static_cast<std::size_t>(a.outputSize);
+  if(std::accumulate(parts.begin(), parts.end(), 0) != a.outputSize)
+  {
+    std::fprintf(stderr, "bench_batch: %s: the parts' sizes do not sum to outputSize %d\n", a.name, a.outputSize);
+    std::abort();
+  }
   std::vector<T> rows(N * m);
   std::size_t offset = 0; // values of a state before this part
   for(const int part : parts)

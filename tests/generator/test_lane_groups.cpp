@@ -19,6 +19,20 @@ namespace
 {
 namespace detail = ur5e::detail;
 
+/// Built twice: with the build's flags (SSE2: packets of 4 floats, 2 doubles) and, where the compiler
+/// takes it, as test_lane_groups_avx512 with -mavx512f -mfma (16 floats: the dispatchers' 40 lanes go
+/// as 16 + 16 + 8, the rest path), every case skipped on a CPU without AVX-512F.
+class LaneGroups : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+#if defined(__AVX512F__)
+    if(!__builtin_cpu_supports("avx512f")) GTEST_SKIP() << "this CPU has no AVX-512F";
+#endif
+  }
+};
+
 struct Group
 {
   int width, first;
@@ -60,7 +74,7 @@ void checkGroupsFor(std::integer_sequence<int, N...>)
   (checkGroups<L, N>(), ...);
 }
 
-TEST(LaneGroups, CoverEveryIndexOnce)
+TEST_F(LaneGroups, CoverEveryIndexOnce)
 {
   const auto sizes = std::make_integer_sequence<int, 42>{};
   checkGroupsFor<1>(sizes);
@@ -152,45 +166,38 @@ void checkWidth(const Inputs<S> & in, double tolerance)
   }
 }
 
+/// checkWidth at every width up to 16 (those wider than the packet skip themselves).
+template<class S>
+void checkEveryWidth(unsigned seed)
+{
+  const Inputs<S> in = randomInputs<S>(seed);
+  const double tolerance = 64 * std::numeric_limits<S>::epsilon();
+  checkWidth<S, 2>(in, tolerance);
+  checkWidth<S, 4>(in, tolerance);
+  checkWidth<S, 8>(in, tolerance);
+  checkWidth<S, 16>(in, tolerance);
+}
+
 // The same operations on each lane; only an FMA contraction the compiler applies to one width and
 // not the other can round differently: a few ulps of the largest value (measured 0: bitwise, g++ 12
 // and clang++ 14 at -O0, -O2, -O3 -march=native).
-TEST(LaneGroups, KernelsAgreeAtEveryWidthFloat)
+TEST_F(LaneGroups, KernelsAgreeAtEveryWidthFloat)
 {
-#if defined(__AVX512F__)
-  if(!__builtin_cpu_supports("avx512f")) GTEST_SKIP() << "this CPU has no AVX-512F";
-#endif
-  const Inputs<float> in = randomInputs<float>(7);
-  const double tolerance = 64 * std::numeric_limits<float>::epsilon();
-  checkWidth<float, 2>(in, tolerance);
-  checkWidth<float, 4>(in, tolerance);
-  checkWidth<float, 8>(in, tolerance);
-  checkWidth<float, 16>(in, tolerance);
+  checkEveryWidth<float>(7);
 }
 
-// Built twice: with the build's flags (SSE2: packets of 4 floats, 2 doubles) and, where the compiler
-// takes it, as test_lane_groups_avx512 with -mavx512f -mfma (16 floats: the dispatchers' 40 lanes go as
-// 16 + 16 + 8, the rest path), its cases skipped on a CPU without AVX-512F.
-TEST(LaneGroups, PacketWidthOfTheBuild)
+TEST_F(LaneGroups, KernelsAgreeAtEveryWidthDouble)
+{
+  checkEveryWidth<double>(11);
+}
+
+TEST_F(LaneGroups, PacketWidthOfTheBuild)
 {
 #if defined(__AVX512F__)
-  if(!__builtin_cpu_supports("avx512f")) GTEST_SKIP() << "this CPU has no AVX-512F";
   EXPECT_EQ(detail::across_lanes<float>(), 16);
   EXPECT_EQ(detail::across_lanes<double>(), 8);
 #endif
   EXPECT_GE(detail::across_lanes<float>(), 2 * detail::across_lanes<double>());
-}
-
-TEST(LaneGroups, KernelsAgreeAtEveryWidthDouble)
-{
-#if defined(__AVX512F__)
-  if(!__builtin_cpu_supports("avx512f")) GTEST_SKIP() << "this CPU has no AVX-512F";
-#endif
-  const Inputs<double> in = randomInputs<double>(11);
-  const double tolerance = 64 * std::numeric_limits<double>::epsilon();
-  checkWidth<double, 2>(in, tolerance);
-  checkWidth<double, 4>(in, tolerance);
-  checkWidth<double, 8>(in, tolerance);
 }
 
 } // namespace

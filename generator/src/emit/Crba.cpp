@@ -126,9 +126,16 @@ std::vector<Scalar> emitLtdlSolve(Block & b, const Ltdl & f, std::vector<Scalar>
       x[jj] = b.sum({Term{1.0, {x[jj]}}, Term{-1.0, {L[i][jj], x[i]}}}, fmt::format("x{}", j));
     }
   for(std::size_t i = 0; i < nv; ++i) x[i] = mul(b, x[i], f.invD[i], fmt::format("x{}", i));
+  // x_i -= L(i, j) x_j over i's ancestors j, the root's first and the parent's last: x_i then waits
+  // on x_parent for one multiply-add, the older ancestors' terms summed before it is known (parent
+  // first, each dof's whole sum waited on its parent: talos_reduced's arms chain ~16 of them a dof)
+  std::vector<std::size_t> path;
   for(std::size_t i = 0; i < nv; ++i)
-    for(int j = lambda[i]; j >= 0; j = lambda[static_cast<std::size_t>(j)])
-      x[i] = b.sum({Term{1.0, {x[i]}}, Term{-1.0, {L[i][static_cast<std::size_t>(j)], x[static_cast<std::size_t>(j)]}}}, fmt::format("x{}", i));
+  {
+    path.clear();
+    for(int j = lambda[i]; j >= 0; j = lambda[static_cast<std::size_t>(j)]) path.push_back(static_cast<std::size_t>(j));
+    for(auto j = path.rbegin(); j != path.rend(); ++j) x[i] = b.sum({Term{1.0, {x[i]}}, Term{-1.0, {L[i][*j], x[*j]}}}, fmt::format("x{}", i));
+  }
   return x;
 }
 

@@ -346,10 +346,10 @@ void emitFloatingBaseColumns(Block & b, const MovingJoint & mj, const FloatingBa
   }
 }
 
-/// Minv = H^-1 by row operations along the dof tree on the identity, then d alphaD = -Minv dID. In
-/// the L^T pass and the D scaling, row i has nonzeros only in the columns of i's subtree [i, end_i]:
-/// the operations use that segment. The rows are those of d.Minv's storage read as row-major (M^-1
-/// is symmetric: no copy). dID's column c is zero but in the rows of c's ancestors and subtree (a
+/// Minv = H^-1 = W^T D^-1 W (W = L^-T, from the factors), then d alphaD = -Minv dID. Row j of W is
+/// non-zero only in the columns of j's subtree [j, end_j]: every row of W and of Minv sums such
+/// segments in registers (detail::row_from_segments: pieces of 8 values, only those the segment
+/// overlaps). The rows are those of d.Minv's storage read as row-major (M^-1 is symmetric: no copy). dID's column c is zero but in the rows of c's ancestors and subtree (a
 /// torque depends on the q and alpha of the joints on its own paths only), so each column of the
 /// product sums those rows of Minv only (detail::minus_times_tree2): talos_reduced + free base
 /// 700 of 1,444 entries.
@@ -363,39 +363,48 @@ void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv, const Robot
   for(std::size_t k = nv; k-- > 0;)
     for(int j = f.lambda[k]; j >= 0; j = f.lambda[static_cast<std::size_t>(j)])
       end[static_cast<std::size_t>(j)] = std::max(end[static_cast<std::size_t>(j)], end[k]);
-  // row `row` of X from column i on, over i's subtree: (length, pointer)
-  const auto segment = [&](std::size_t row, std::size_t i) {
-    return std::make_pair(end[i] - i + 1, fmt::format("X + {}", row * nv + i));
+  // M^-1 = L^-1 D^-1 L^-T = W^T D^-1 W with W = L^-T, whose row j is non-zero over j's subtree
+  // [j, end(j)] only. Each row of X in registers from segments (detail::row_from_segments), rows
+  // from the last up, so that every row read is complete (with its zeros) and not yet replaced:
+  //   W(j, :) = e_j - sum over the descendants i of j of L(i, j) W(i, :)
+  //   M^-1(a, :) = sum over a's ancestors k and a itself of (W(k, a) / D_k) W(k, :)
+  const auto rowCall = [&](int sign, std::size_t row, const std::vector<std::size_t> & from, const std::vector<std::string> & coef) {
+    if(from.empty()) return fmt::format("detail::row_from_segments<{}, nv>(X + {});", sign, row * nv);
+    std::string bounds, rows, cs;
+    for(std::size_t t = 0; t < from.size(); ++t)
+    {
+      bounds += fmt::format(", {}, {}", from[t], end[from[t]] + 1);
+      rows += fmt::format("{}X + {}", t ? ", " : "", from[t] * nv);
+      cs += (t ? ", " : "") + coef[t];
+    }
+    return fmt::format("detail::row_from_segments<{}, nv{}>(X + {}, {{{}}}, {{{}}});", sign, bounds, row * nv, cs, rows);
   };
-  b.comment("Minv = H^-1: row operations along the dof tree on the identity (L^T, D, then L), X row-major");
-  // X = 1 as zeros then the diagonal: Identity() fills entry by entry with a test per entry
-  // (talos_reduced: 3.9 % of forward_dynamics_derivatives, against 0.3 % more in memset this way)
-  b.line("d.Minv.setZero();");
-  b.line("d.Minv.diagonal().setOnes();");
+  b.comment("Minv = H^-1 = W^T D^-1 W, W = L^-T: the rows of W, then those of Minv (each from the last), X row-major");
   b.line("S * const X = d.Minv.data();");
-  for(std::size_t i = nv; i-- > 0;)
-    for(int j = f.lambda[i]; j >= 0; j = f.lambda[static_cast<std::size_t>(j)])
-      if(!f.L[i][static_cast<std::size_t>(j)].isZero())
-      {
-        const auto [n, x] = segment(static_cast<std::size_t>(j), i);
-        b.line(fmt::format("detail::row_axpy<{}>({}, {}, {});", n, x, Block::text(f.L[i][static_cast<std::size_t>(j)]), segment(i, i).second));
-      }
-  for(std::size_t i = 0; i < nv; ++i)
+  for(std::size_t j = nv; j-- > 0;)
   {
-    const auto [n, x] = segment(i, i);
-    b.line(fmt::format("detail::row_scale<{}>({}, {});", n, x, Block::text(f.invD[i])));
+    std::vector<std::size_t> from;
+    std::vector<std::string> coef;
+    for(std::size_t i = j + 1; i <= end[j]; ++i)
+      if(const Scalar & l = f.L[i][j]; !l.isZero())
+      {
+        from.push_back(i);
+        coef.push_back(Block::text(l));
+      }
+    b.line(rowCall(-1, j, from, coef));
+    b.line(fmt::format("X[{}] = S(1);", j * nv + j));
   }
-  // L pass: row i -= L(i, j) row j over i's ancestors j, in one call per row (detail::row_axpys)
-  for(std::size_t i = 0; i < nv; ++i)
+  for(std::size_t a = nv; a-- > 0;)
   {
-    std::string coefficients, rows;
-    for(int j = f.lambda[i]; j >= 0; j = f.lambda[static_cast<std::size_t>(j)])
-      if(!f.L[i][static_cast<std::size_t>(j)].isZero())
-      {
-        coefficients += fmt::format("{}{}", coefficients.empty() ? "" : ", ", Block::text(f.L[i][static_cast<std::size_t>(j)]));
-        rows += fmt::format("{}X + {}", rows.empty() ? "" : ", ", static_cast<std::size_t>(j) * nv);
-      }
-    if(!rows.empty()) b.line(fmt::format("detail::row_axpys<nv>(X + {}, {{{}}}, {{{}}});", i * nv, coefficients, rows));
+    std::vector<std::size_t> from;
+    std::vector<std::string> coef;
+    for(int k = static_cast<int>(a); k >= 0; k = f.lambda[static_cast<std::size_t>(k)])
+    {
+      const auto kk = static_cast<std::size_t>(k);
+      from.insert(from.begin(), kk);
+      coef.insert(coef.begin(), kk == a ? Block::text(f.invD[a]) : fmt::format("X[{}] * {}", kk * nv + a, Block::text(f.invD[kk])));
+    }
+    b.line(rowCall(1, a, from, coef));
   }
   std::string parents, ends;
   for(std::size_t i = 0; i < nv; ++i)

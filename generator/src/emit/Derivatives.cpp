@@ -347,9 +347,10 @@ void emitFloatingBaseColumns(Block & b, const MovingJoint & mj, const FloatingBa
 }
 
 /// Minv = H^-1 = W^T D^-1 W (W = L^-T, from the factors), then d alphaD = -Minv dID. Row j of W is
-/// non-zero only in the columns of j's subtree [j, end_j]: every row of W and of Minv sums such
-/// segments in registers (detail::row_from_segments: pieces of 8 values, only those the segment
-/// overlaps). The rows are those of d.Minv's storage read as row-major (M^-1 is symmetric: no copy). dID's column c is zero but in the rows of c's ancestors and subtree (a
+/// non-zero only in the columns of j's subtree [j, end_j]: the row operations of W use that segment,
+/// and every row of Minv sums such segments in registers (detail::row_from_segments: pieces of 8
+/// values, only those a segment overlaps). The rows are those of d.Minv's storage read as row-major
+/// (M^-1 is symmetric: no copy). dID's column c is zero but in the rows of c's ancestors and subtree (a
 /// torque depends on the q and alpha of the joints on its own paths only), so each column of the
 /// product sums those rows of Minv only (detail::minus_times_tree2): talos_reduced + free base
 /// 700 of 1,444 entries.
@@ -376,7 +377,7 @@ void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv, const Robot
       rows += fmt::format("{}X + {}", t ? ", " : "", from[t] * nv);
       cs += (t ? ", " : "") + coef[t];
     }
-    return fmt::format("detail::row_from_segments<1, nv{}>(X + {}, {{{}}}, {{{}}});", bounds, row * nv, cs, rows);
+    return fmt::format("detail::row_from_segments<nv{}>(X + {}, {{{}}}, {{{}}});", bounds, row * nv, cs, rows);
   };
   b.comment("Minv = H^-1 = W^T D^-1 W, W = L^-T: W by row operations on the identity, then the rows of Minv (from the last), "
             "X row-major");

@@ -1,6 +1,7 @@
 // Mass matrix (composite rigid-body algorithm: the composite-inertia pass, then each column's
 // force F = Ic S carried along the support path to the root) and forward dynamics by CRBA + a
 // tree-sparse L^T D L factorisation (Featherstone, RBDA 6.5).
+#include <algorithm>
 #include <fmt/format.h>
 
 #include "../passes/CompositeInertia.h"
@@ -129,14 +130,17 @@ std::vector<Scalar> emitLtdlSolve(Block & b, const Ltdl & f, std::vector<Scalar>
   // x_i -= L(i, j) x_j over i's ancestors j, the root's first and the parent's last: x_i then waits
   // on x_parent for one multiply-add, the older ancestors' terms summed before it is known (parent
   // first, each dof's whole sum waited on its parent: talos_reduced's arms chain ~16 of them a dof)
-  std::vector<std::size_t> path;
   for(std::size_t i = 0; i < nv; ++i)
-  {
-    path.clear();
-    for(int j = lambda[i]; j >= 0; j = lambda[static_cast<std::size_t>(j)]) path.push_back(static_cast<std::size_t>(j));
-    for(auto j = path.rbegin(); j != path.rend(); ++j) x[i] = b.sum({Term{1.0, {x[i]}}, Term{-1.0, {L[i][*j], x[*j]}}}, fmt::format("x{}", i));
-  }
+    for(const std::size_t j : f.ancestorsRootFirst(i)) x[i] = b.sum({Term{1.0, {x[i]}}, Term{-1.0, {L[i][j], x[j]}}}, fmt::format("x{}", i));
   return x;
+}
+
+std::vector<std::size_t> Ltdl::ancestorsRootFirst(std::size_t i) const
+{
+  std::vector<std::size_t> path;
+  for(int j = lambda[i]; j >= 0; j = lambda[static_cast<std::size_t>(j)]) path.push_back(static_cast<std::size_t>(j));
+  std::reverse(path.begin(), path.end());
+  return path;
 }
 
 MassMatrixLower massMatrixLowerBody(const RobotModel & rm, const std::vector<double> & armature)

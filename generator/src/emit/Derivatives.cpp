@@ -393,14 +393,11 @@ void emitDerivativeSolves(Block & b, const Ltdl & f, std::size_t nv, const Robot
                            i * nv + i));
   for(std::size_t a = nv; a-- > 0;)
   {
-    std::vector<std::size_t> from;
+    std::vector<std::size_t> from = f.ancestorsRootFirst(a);
     std::vector<std::string> coef;
-    for(int k = static_cast<int>(a); k >= 0; k = f.lambda[static_cast<std::size_t>(k)])
-    {
-      const auto kk = static_cast<std::size_t>(k);
-      from.insert(from.begin(), kk);
-      coef.insert(coef.begin(), kk == a ? Block::text(f.invD[a]) : fmt::format("X[{}] * {}", kk * nv + a, Block::text(f.invD[kk])));
-    }
+    for(const std::size_t k : from) coef.push_back(fmt::format("X[{}] * {}", k * nv + a, Block::text(f.invD[k])));
+    from.push_back(a);
+    coef.push_back(Block::text(f.invD[a]));
     b.line(rowCall(a, from, coef));
   }
   std::string parents, ends;

@@ -103,6 +103,8 @@ struct Ltdl
   std::vector<std::vector<cg::Scalar>> L;
   std::vector<cg::Scalar> invD;
   std::vector<int> lambda;
+  /// the ancestors of dof i in the dof tree (lambda), the root first, i excluded
+  std::vector<std::size_t> ancestorsRootFirst(std::size_t i) const;
 };
 /// Factorise the lower triangle H (from emitMassMatrix).
 Ltdl emitLtdl(cg::Block & b, const RobotModel & rm, std::vector<std::vector<cg::Scalar>> H);

@@ -109,6 +109,39 @@ TEST(HomeInSlots, ALineDeclaringSeveralArraysMovesOnce)
   EXPECT_EQ(homeInSlots(lines, {"pu", "pb", "ps"}), expected);
 }
 
+// An array changed in place after the copies (the LTDL factors): a value still read after the first
+// line that changes the array keeps its name (its slot no longer holds it there); the others are
+// homed as usual.
+TEST(HomeInSlots, ValuesReadAfterAnInPlaceChangeKeepTheirNames)
+{
+  const std::vector<std::string> lines = {
+      "const S a = x * y;",
+      "const S b = x + y;",
+      "S lt[3];",
+      "RBDGEN_IN_MEMORY(lt);", // names the array before the copies: no change after them
+      "lt[0] = a;",
+      "lt[1] = b;",
+      "lt[2] = x;",
+      "out[0] = b;",           // before the change: reads b's home
+      "{ const S s = lt[0] * z; scale(lt, s); }",
+      "out[1] = a + lt[1];",   // a read after the change: a keeps its name
+  };
+  const std::vector<std::string> expected = {
+      "const S a = x * y;",
+      "S lt[3];",
+      "lt[1] = x + y;",
+      "RBDGEN_IN_MEMORY(lt);",
+      "lt[0] = a;",
+      "lt[2] = x;",
+      "out[0] = lt[1];",
+      "{ const S s = lt[0] * z; scale(lt, s); }",
+      "out[1] = a + lt[1];",
+  };
+  EXPECT_EQ(homeInSlots(lines, {"lt"}, {}, {"lt"}), expected);
+  // (without the rule a would be homed too, and out[1] would read the changed slot lt[0])
+  EXPECT_EQ(homeInSlots(lines, {"lt"})[1], "lt[0] = x * y;");
+}
+
 TEST(HomeInSlots, NamesAfterADotOrInLongerNamesAreNotReads)
 {
   const std::vector<std::string> lines = {

@@ -262,7 +262,7 @@ std::string Block::str(const std::string & indent) const
     if(keep[k]) kept.push_back(lines_[k]);
   if(batchSinCos_) kept = rbdgen::cg::batchSinCos(kept);
   kept = inlineSingleUse(kept, indent.size() < 120 ? 120 - indent.size() : 0);
-  if(!homeArrays_.empty()) kept = homeInSlots(kept, homeArrays_, readByElement_);
+  if(!homeArrays_.empty()) kept = homeInSlots(kept, homeArrays_, readByElement_, changedInPlace_);
   // A section comment (`// j3: ...`) directly followed by the same comment of the next joint heads
   // no code (its statements were shared or folded away): dropped.
   auto afterTag = [](const std::string & l) { return l.substr(std::min(l.find(' ', 3), l.size())); };

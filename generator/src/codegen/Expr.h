@@ -81,10 +81,13 @@ public:
   /// Values copied into this array's slots get their slot as home (HomeInSlots.h): for the arrays
   /// written by assignments only (the inputs of out-of-line kernels). readByElement: the array is
   /// read slot by slot only (never whole by a kernel), so a copy of a value homed elsewhere goes.
-  void homeCopiesIn(const std::string & array, bool readByElement = false)
+  /// changedInPlace: lines after the copies change its slots (the LTDL factors): a value read after
+  /// the first such line keeps its own name.
+  void homeCopiesIn(const std::string & array, bool readByElement = false, bool changedInPlace = false)
   {
     homeArrays_.insert(array);
     if(readByElement) readByElement_.insert(array);
+    if(changedInPlace) changedInPlace_.insert(array);
   }
 
 private:
@@ -93,7 +96,7 @@ private:
   std::vector<std::string> taken_;
   long mults_ = 0, adds_ = 0, calls_ = 0;
   bool batchSinCos_ = true;
-  std::set<std::string> homeArrays_, readByElement_;
+  std::set<std::string> homeArrays_, readByElement_, changedInPlace_;
 };
 
 /// Scalar helpers built on Block::sum.

@@ -113,7 +113,7 @@ std::string readAliases(const std::string & l, const std::map<std::string, std::
 } // namespace
 
 std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, const std::set<std::string> & arrays,
-                                     const std::set<std::string> & readByElement)
+                                     const std::set<std::string> & readByElement, const std::set<std::string> & changedInPlace)
 {
   const std::size_t n = lines.size();
   // top level: outside every brace (lambda bodies, loops)
@@ -136,6 +136,29 @@ std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, con
     const auto eq = l.find(" = ");
     if(eq != std::string::npos) ++writes[l.substr(0, eq)];
   }
+  // arrays changed in place: the lines that name them other than by a copy or an assignment to a
+  // slot (their first after a copy bounds the reads of the value copied), and each name's last read
+  std::map<std::string, std::vector<std::size_t>> changes;
+  std::map<std::string, std::size_t> lastRead;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const std::string code = codeOf(lines[k]);
+    std::string name, rhs, slot, array, copied;
+    const bool def = parseDef(lines[k], name, rhs);
+    const bool copy = parseCopy(lines[k], arrays, slot, array, copied);
+    forEachLocal(code, [&](std::size_t i, std::size_t j) {
+      const std::string id = code.substr(i, j - i);
+      if(changedInPlace.count(id) && !copy && !(i == 0 && code.compare(j, 1, "[") == 0) && (changes[id].empty() || changes[id].back() != k))
+        changes[id].push_back(k);
+      if(!(def && i < name.size() + 8 && id == name)) lastRead[id] = k;
+    });
+  }
+  const auto changedBefore = [&](const std::string & array, std::size_t copy, std::size_t read) {
+    const auto c = changes.find(array);
+    if(c == changes.end()) return false;
+    const auto after = std::upper_bound(c->second.begin(), c->second.end(), copy);
+    return after != c->second.end() && *after <= read;
+  };
   // the first copy of each defined name into a slot written once: its home
   std::map<std::string, std::string> home;
   std::map<std::string, std::string> homeArray;
@@ -146,6 +169,7 @@ std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, con
     if(!top[k] || !parseCopy(lines[k], arrays, slot, array, name)) continue;
     const auto d = defLine.find(name);
     if(d == defLine.end() || d->second > k || home.count(name) || writes[slot] != 1) continue;
+    if(changedBefore(array, k, lastRead[name])) continue;
     home[name] = slot;
     homeArray[name] = array;
     dropped[k] = true;

@@ -10,7 +10,9 @@
 // The arrays are the inputs of out-of-line kernels and columns (the derivatives' lanes): written by
 // assignments, or by a call only in slots no copy writes (padding lanes and rows). A further copy of a homed value into an array of
 // `readByElement` (read slot by slot, never as a whole by a kernel) goes too: the reads of that
-// slot read the home.
+// slot read the home. An array of `changedInPlace` has its slots changed after the copies by lines
+// that name the array otherwise (the LTDL factorisation's row updates): a value read at or after
+// the first such line following its copy is not homed there (its reads would see the changed slot).
 
 #include <set>
 #include <string>
@@ -20,6 +22,7 @@ namespace rbdgen::cg
 {
 
 std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, const std::set<std::string> & arrays,
-                                     const std::set<std::string> & readByElement = {});
+                                     const std::set<std::string> & readByElement = {},
+                                     const std::set<std::string> & changedInPlace = {});
 
 } // namespace rbdgen::cg

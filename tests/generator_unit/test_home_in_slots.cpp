@@ -140,6 +140,12 @@ TEST(HomeInSlots, ValuesReadAfterAnInPlaceChangeKeepTheirNames)
   EXPECT_EQ(homeInSlots(lines, {"lt"}, {}, {"lt"}), expected);
   // (without the rule a would be homed too, and out[1] would read the changed slot lt[0])
   EXPECT_EQ(homeInSlots(lines, {"lt"})[1], "lt[0] = x * y;");
+  // a compound assignment to a slot changes the array too
+  std::vector<std::string> compound = lines;
+  compound[8] = "lt[0] *= z;";
+  std::vector<std::string> expectedCompound = expected;
+  expectedCompound[7] = "lt[0] *= z;";
+  EXPECT_EQ(homeInSlots(compound, {"lt"}, {}, {"lt"}), expectedCompound);
 }
 
 TEST(HomeInSlots, NamesAfterADotOrInLongerNamesAreNotReads)

@@ -148,7 +148,9 @@ std::vector<std::string> homeInSlots(const std::vector<std::string> & lines, con
     const bool copy = parseCopy(lines[k], arrays, slot, array, copied);
     forEachLocal(code, [&](std::size_t i, std::size_t j) {
       const std::string id = code.substr(i, j - i);
-      if(changedInPlace.count(id) && !copy && !(i == 0 && code.compare(j, 1, "[") == 0) && (changes[id].empty() || changes[id].back() != k))
+      // (a plain assignment to one of its slots, `a[i] = e;`, is not a change: counted in writes)
+      const bool assignment = i == 0 && code.compare(j, 1, "[") == 0 && code.find(" = ") != std::string::npos;
+      if(changedInPlace.count(id) && !copy && !assignment && (changes[id].empty() || changes[id].back() != k))
         changes[id].push_back(k);
       if(!(def && i < name.size() + 8 && id == name)) lastRead[id] = k;
     });

@@ -103,8 +103,8 @@ constexpr std::size_t kLtdlArrayDofs = 16;
 /// first depth(i) + 1 of both rows and Featherstone's update H(i, j) -= a H(k, j) is one
 /// detail::minus_scaled over them. The same operations as in named values, where the entries of
 /// H and their updates were spilled to the stack one by one (talos_reduced + free base: 2,851 of
-/// the factorisation's 5,387 instructions, clang++; forward_dynamics_derivatives 2.6-3.6 % faster
-/// with clang++, 3.1-3.7 % with g++, outputs bitwise equal).
+/// the factorisation's 5,387 instructions, clang++; its forward_dynamics_derivatives 2.6-3.3 %
+/// faster with clang++, 4.4-4.6 % with g++, outputs bitwise equal).
 Ltdl emitLtdlInArray(Block & b, const std::vector<int> & lambda, std::vector<std::vector<Scalar>> H)
 {
   const std::size_t nv = lambda.size();

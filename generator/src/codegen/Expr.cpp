@@ -280,6 +280,17 @@ std::string Block::str(const std::string & indent) const
   return out;
 }
 
+void stashScalars(Block & b, const std::string & array, int k, const std::vector<Scalar *> & e)
+{
+  for(std::size_t i = 0; i < e.size(); ++i)
+  {
+    if(e[i]->isConst()) continue;
+    const std::string slot = array + "[" + std::to_string(k) + "][" + std::to_string(i) + "]";
+    b.line(slot + " = " + Block::text(*e[i]) + ";");
+    *e[i] = Scalar::var(slot);
+  }
+}
+
 Scalar add(Block & b, const Scalar & x, const Scalar & y, const std::string & hint)
 {
   return b.sum({Term{1.0, {x}}, Term{1.0, {y}}}, hint);

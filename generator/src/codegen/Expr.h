@@ -99,6 +99,10 @@ private:
   std::set<std::string> homeArrays_, readByElement_, changedInPlace_;
 };
 
+/// Stores the non-constant scalars *e[i] in array[k][i] (`array[k][i] = value;`) and replaces them by
+/// those slots: long-lived values moved into an array (the derivatives' stashes, the RNEA's forces).
+void stashScalars(Block & b, const std::string & array, int k, const std::vector<Scalar *> & e);
+
 /// Scalar helpers built on Block::sum.
 Scalar add(Block & b, const Scalar & x, const Scalar & y, const std::string & hint);
 Scalar sub(Block & b, const Scalar & x, const Scalar & y, const std::string & hint);

@@ -43,15 +43,7 @@ void emitRnea(PassContext & ctx, const RneaTerms & terms, const std::string & gr
   forwardMotion(ctx, req, ctx.allJoints(), [&](int k, const MotionState & m) {
     Force & fk = f[static_cast<std::size_t>(k)];
     fk = inertialForce(ctx, m, terms.velocity, k);
-    if(!inArray) return;
-    Scalar * e[6] = {&fk.n[0], &fk.n[1], &fk.n[2], &fk.f[0], &fk.f[1], &fk.f[2]};
-    for(int c = 0; c < 6; ++c)
-      if(!e[c]->isConst())
-      {
-        const std::string slot = fmt::format("rnea_f[{}][{}]", k, c);
-        b.line(fmt::format("{} = {};", slot, Block::text(*e[c])));
-        *e[c] = Scalar::var(slot);
-      }
+    if(inArray) stashScalars(b, "rnea_f", k, {&fk.n[0], &fk.n[1], &fk.n[2], &fk.f[0], &fk.f[1], &fk.f[2]});
   });
   backwardForces(ctx, f, writeTorques(ctx, "tau"));
 }

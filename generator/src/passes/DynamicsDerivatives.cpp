@@ -286,18 +286,6 @@ constexpr int kBlockRows = 2;
 /// forward_dynamics_derivatives of ur5 (which calls them) 18 % slower (910 -> 1,100 ns).
 constexpr int kBlockRobotRows = 8;
 
-/// Stores the non-constant scalars in array[k][0..] and replaces them by those slots.
-void stashScalars(Block & b, const std::string & array, int k, const std::vector<Scalar *> & e)
-{
-  for(std::size_t i = 0; i < e.size(); ++i)
-  {
-    if(e[i]->isConst()) continue;
-    const std::string slot = fmt::format("{}[{}][{}]", array, k, i);
-    b.line(fmt::format("{} = {};", slot, Block::text(*e[i])));
-    *e[i] = Scalar::var(slot);
-  }
-}
-
 namespace
 {
 

@@ -218,7 +218,8 @@ std::string emitDynamicsHeader(const RobotModel & rm, const HeaderSpec & spec)
              {"bias", gravity || velocity}, {"generalized_bias", !robotApi && genBias},
              {"forward_dynamics", fd},      {"no_forward_dynamics", !fd},
              {"derivatives", spec.derivatives}, {"own_model", true},
-             {"coupled", false},            {"independent_alias", !coupled}};
+             {"coupled", false},            {"independent_alias", !coupled},
+             {"idd_on_paths", spec.derivatives}, {"idd_off_paths", false}};
   for(const char * f : {"wrenches", "contacts", "quaternion", "free", "planar", "rk4", "semi_implicit_euler", "explicit_euler"})
     h.flags[f] = false; // (the scene's sections: sceneSections)
   auto & v = h.values;
@@ -261,6 +262,8 @@ std::string emitDynamicsHeader(const RobotModel & rm, const HeaderSpec & spec)
   if(spec.derivatives)
   {
     v["fn_inverse_dynamics_derivatives"] = inverseDynamicsDerivativesBody(rm, fx).text;
+    v["idd_zeros_off_paths"] = derivativeZerosOffPaths(rm);
+    h.flags["idd_off_paths"] = !v["idd_zeros_off_paths"].empty();
     if(fd) v["fn_forward_dynamics_derivatives"] = forwardDynamicsDerivativesBody(rm, fx, bias, wrenchArg).text;
   }
   v["shared_passes"] = shared.definitions();

@@ -56,10 +56,14 @@ void emitPointMotion(cg::Block & b, const cg::Xform & X0, const cg::Motion & v, 
 /// - contact and wrench torques.
 EmittedBody sceneRneaBody(const RobotModel & rm, const SceneEffects & fx, bool withAlphaD);
 
-/// Reads q, alpha, alphaD [, wrenches]; fills d.dtau_dq, d.dtau_dalpha (zeroed before) of the
-/// inverse dynamics with effects fx (tangent convention of rbd/IDDerivatives.h; wrenches held
-/// constant; contact forces differentiated where a point is pushed).
+/// Reads q, alpha, alphaD [, wrenches]; fills the entries of d.dtau_dq, d.dtau_dalpha on the dof
+/// tree's paths (dofs one the other or its ancestor) of the inverse dynamics with effects fx
+/// (tangent convention of rbd/IDDerivatives.h; wrenches held constant; contact forces
+/// differentiated where a point is pushed); the others are derivativeZerosOffPaths'.
 EmittedBody inverseDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx);
+/// The lines setting the entries of d.dtau_dq and d.dtau_dalpha off the dof tree's paths to zero,
+/// as runs of rows per column.
+std::string derivativeZerosOffPaths(const RobotModel & rm);
 /// Reads q, alpha, tau [, wrenches]; fills d (FdDerivatives<S>: alphaD, dalphaD_dq, dalphaD_dalpha,
 /// Minv) of the forward dynamics with effects fx, calling inverse_dynamics_derivatives(); biasCall:
 /// the bias call (nonlinear_effects or generalized_bias; empty: none), wrenchArg ", wrenches" or "".

@@ -466,6 +466,7 @@ std::string coupledSceneSections(HeaderSections h, const RobotModel & rm, const 
                                     "// without armature; see independent::).";
   if(h.flags.at("derivatives"))
   {
+    h.flags["idd_on_paths"] = false; // (the projection of independent::'s, whole)
     v["fn_inverse_dynamics_derivatives"] = fmt::format(
         "  const auto full = independent::inverse_dynamics_derivatives<S>({}, expand_tangent<S>(alphaD){});\n"
         "  d.dtau_dq = project_matrix<S>(full.dtau_dq);\n"

@@ -2,6 +2,7 @@
 // within 1e-12 (max |generated - runtime| / max(1, max |runtime|)), float within the bounds below;
 // no heap allocation during generated calls.
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <vector>
 
@@ -434,6 +435,53 @@ std::vector<std::pair<int, int>> freeRoots(const rbd::MultiBody & mb)
     if(fixedAbove) roots.emplace_back(mb.jointPosInDof(j), mb.successor(j));
   }
   return roots;
+}
+
+/// Fills 256 KB of the stack below the caller's frame with `value`: the frames of the calls the
+/// caller makes next start from that content (their locals before they write them).
+[[gnu::noinline]] void fillStack(double value)
+{
+  constexpr std::size_t n = (256u << 10) / sizeof(double);
+  volatile double junk[n];
+  for(std::size_t i = 0; i < n; ++i) junk[i] = value;
+}
+
+// The derivatives read no value they did not write: the same call after the stack (the functions'
+// locals, e.g. forward_dynamics_derivatives' IdDerivatives) and the output matrices were filled
+// with NaN, then with zeros, gives finite and bitwise equal outputs. (Up to 8 dofs the products
+// -M^-1 dID are dense and read dID's entries off the dof tree's paths: two_fingers, a branching
+// tree of 5 dofs, left NaN there when only the paths were written.)
+TEST_P(GeneratedDerivatives, IgnoreWhatTheStackHeld)
+{
+  Reference ref(g());
+  rbdtest::Rng rng(13);
+  const int nv = g().nv;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for(int s = 0; s < 4; ++s)
+  {
+    ref.sample(rng);
+    const Eigen::VectorXd q = ref.q(), a = ref.alpha(), acc = ref.alphaD(), tau = ref.torque();
+    std::vector<Eigen::MatrixXd> out[2];
+    for(int k = 0; k < 2; ++k)
+    {
+      const double fill = k == 0 ? nan : 0.0;
+      std::vector<Eigen::MatrixXd> & o = out[k];
+      o.assign(5, Eigen::MatrixXd::Constant(nv, nv, fill));
+      o.push_back(Eigen::MatrixXd::Constant(nv, 1, fill));
+      fillStack(fill);
+      g().d.inverseDynamicsDerivatives(q.data(), a.data(), acc.data(), o[0].data(), o[1].data());
+      if(!g().d.forwardDynamicsDerivatives) continue;
+      fillStack(fill);
+      g().d.forwardDynamicsDerivatives(q.data(), a.data(), tau.data(), o[5].data(), o[2].data(), o[3].data(), o[4].data());
+    }
+    const char * names[] = {"dtau_dq", "dtau_dalpha", "dalphaD_dq", "dalphaD_dalpha", "Minv", "alphaD"};
+    for(std::size_t m = 0; m < out[0].size(); ++m)
+    {
+      if(m >= 2 && !g().d.forwardDynamicsDerivatives) break;
+      EXPECT_TRUE(out[0][m].allFinite()) << names[m] << ", state " << s;
+      EXPECT_TRUE(out[0][m].cwiseEqual(out[1][m]).all()) << names[m] << ", state " << s;
+    }
+  }
 }
 
 // A floating base's pose moves the forward dynamics through gravity alone (no contacts, no world

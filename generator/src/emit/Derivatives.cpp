@@ -72,6 +72,30 @@ void zeroRun(Block & b, const std::string & out, const char * m, int col, int r0
   else b.line(fmt::format("{}.{}.col({}).template segment<{}>({}).setZero();", out, m, col, r1 - r0, r0));
 }
 
+/// Zero into the entries of out.dtau_dq and out.dtau_dalpha off the dof tree's paths (structurally
+/// zero), as runs of rows per column; false when there are none (a chain).
+bool emitZerosOffPaths(Block & b, const RobotModel & rm, const std::string & out)
+{
+  const int nv = rm.nv;
+  const std::vector<bool> related = onePathEntries(rm);
+  if(std::all_of(related.begin(), related.end(), [](bool x) { return x; })) return false;
+  const auto off = [&](int row, int col) { return !related[static_cast<std::size_t>(col * nv + row)]; };
+  b.comment("the entries off the dof tree's paths: structurally zero");
+  for(const char * m : {"dtau_dq", "dtau_dalpha"})
+    for(int col = 0; col < nv; ++col)
+      for(int r0 = 0, r1 = 0; r0 < nv; r0 = r1)
+      {
+        for(r1 = r0 + 1; r1 < nv && off(r1, col) == off(r0, col);) ++r1;
+        if(off(r0, col)) zeroRun(b, out, m, col, r0, r1);
+      }
+  return true;
+}
+
+/// Up to this many dofs, detail::minus_times_tree2 (templates/detail_opaque.hpp.in) forms -M^-1 dID
+/// as two dense products, which read every entry of dID: the forward dynamics derivatives then
+/// zero dID's entries off the paths too (a branching tree of 8 dofs or fewer).
+constexpr int kDenseProductDofs = 8;
+
 /// The entries of derivativePairs as assignments to out.dtau_dq and out.dtau_dalpha (out: `d` or
 /// `id`), then zero into every entry on one path of the dof tree that was not assigned, as runs of
 /// rows per column (rather than both matrices zeroed first: a call to memset of 2 nv^2 values, 4 %
@@ -474,6 +498,7 @@ EmittedBody fdDerivativesBody(const RobotModel & rm, const SceneEffects & fx, co
   for(std::size_t i = 0; i < nv; ++i) b.line(fmt::format("d.alphaD[{}] = {};", i, Block::text(x[i])));
   b.line("IdDerivatives<S> id;");
   b.line(idCall + ";");
+  if(rm.nv <= kDenseProductDofs) emitZerosOffPaths(b, rm, "id");
   std::vector<std::pair<FloatingBase, Mat3>> bases;
   for(const FloatingBase & fb : floatingBases(rm, fx)) // E = E_j(q) E_T: the joint's kernel, its fixed transform from the world
   {
@@ -584,6 +609,7 @@ EmittedBody fusedFdDerivativesBody(const RobotModel & rm, const SceneEffects & f
   }
   b.line("IdDerivatives<S> id;");
   emitDerivativeEntries(ctx, w, c, fx.gravity, fext, "id");
+  if(rm.nv <= kDenseProductDofs) emitZerosOffPaths(b, rm, "id");
   emitJointSpaceDerivatives(b, rm, fx, "id");
   std::vector<std::pair<FloatingBase, Mat3>> bases;
   for(const FloatingBase & fb : floatingBases(rm, fx)) bases.emplace_back(fb, fr.X0[static_cast<std::size_t>(fb.joint)].E);
@@ -596,19 +622,7 @@ EmittedBody fusedFdDerivativesBody(const RobotModel & rm, const SceneEffects & f
 std::string derivativeZerosOffPaths(const RobotModel & rm)
 {
   Block b;
-  const int nv = rm.nv;
-  const std::vector<bool> related = onePathEntries(rm);
-  const auto off = [&](int row, int col) { return !related[static_cast<std::size_t>(col * nv + row)]; };
-  if(std::all_of(related.begin(), related.end(), [](bool x) { return x; })) return "";
-  b.comment("the entries off the dof tree's paths: structurally zero");
-  for(const char * m : {"dtau_dq", "dtau_dalpha"})
-    for(int col = 0; col < nv; ++col)
-      for(int r0 = 0, r1 = 0; r0 < nv; r0 = r1)
-      {
-        for(r1 = r0 + 1; r1 < nv && off(r1, col) == off(r0, col);) ++r1;
-        if(off(r0, col)) zeroRun(b, "d", m, col, r0, r1);
-      }
-  return finish(b).text;
+  return emitZerosOffPaths(b, rm, "d") ? finish(b).text : "";
 }
 
 EmittedBody inverseDynamicsDerivativesBody(const RobotModel & rm, const SceneEffects & fx)

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 #include <xsimd/xsimd.hpp>
@@ -97,79 +98,55 @@ int main()
       keep(out.data());
     });
   };
+  // one row: compute(config) on one state and on a pack (its result kept live), storeOne(s, config)
+  // the single-state loop's body, batch(q, out, layout) the batch API
+  const auto measure = [&](const char * name, std::size_t values, auto && compute, auto && storeOne, auto && batch) {
+    N = inCache(values);
+    const auto batchTimed = [&](NS::batch::Layout layout) {
+      return timed([&](int it) {
+        batch(q.data() + first(it) * nq, out.data(), layout);
+        keep(out.data());
+      });
+    };
+    return Row{name, N,
+               timed([&](int it) {
+                 for(std::size_t s = 0; s < N; ++s) keep(compute(config(first(it) + s)).data());
+               }),
+               timed([&](int it) {
+                 for(std::size_t s = 0; s < N; ++s) storeOne(s, config(first(it) + s));
+                 keep(out.data());
+               }),
+               timed([&](int it) {
+                 for(std::size_t s = 0; s < N; s += W) keep(compute(packConfig(first(it) + s)).data());
+               }),
+               batchTimed(NS::batch::Layout::rows), batchTimed(NS::batch::Layout::columns), writeOnly(values)};
+  };
+  // the scalar (T or P) of a configuration
+  const auto scalarOf = [](const auto & qs) { return typename std::decay_t<decltype(qs)>::Scalar{}; };
   std::vector<Row> rows;
   // forward kinematics: 16 values a link (the batch API's 4 x 4 homogeneous transforms)
-  N = inCache(16 * nb);
-  rows.push_back({"forward kinematics", N,
-                  timed([&](int it) {
-                    for(std::size_t s = 0; s < N; ++s)
-                    {
-                      const auto pose = NS::forward_kinematics<T>(config(first(it) + s));
-                      keep(pose.data());
-                    }
-                  }),
-                  timed([&](int it) {
-                    for(std::size_t s = 0; s < N; ++s)
-                    {
-                      const auto pose = NS::forward_kinematics<T>(config(first(it) + s));
-                      for(std::size_t b = 0; b < nb; ++b)
-                      {
-                        Eigen::Map<Eigen::Matrix<T, 4, 4, Eigen::RowMajor>> X(out.data() + (s * nb + b) * 16);
-                        X.template topLeftCorner<3, 3>() = pose[b].rotation.transpose();
-                        X.template topRightCorner<3, 1>() = pose[b].translation;
-                        X.template bottomRows<1>() << T(0), T(0), T(0), T(1);
-                      }
-                    }
-                    keep(out.data());
-                  }),
-                  timed([&](int it) {
-                    for(std::size_t s = 0; s < N; s += W)
-                    {
-                      const auto pose = NS::forward_kinematics<P>(packConfig(first(it) + s));
-                      keep(pose.data());
-                    }
-                  }),
-                  timed([&](int it) {
-                    NS::batch::forward_kinematics<T>(q.data() + first(it) * nq, out.data(), N);
-                    keep(out.data());
-                  }),
-                  timed([&](int it) {
-                    NS::batch::forward_kinematics<T>(q.data() + first(it) * nq, out.data(), N, 1, NS::batch::Layout::columns);
-                    keep(out.data());
-                  }),
-                  writeOnly(16 * nb)});
+  rows.push_back(measure(
+      "forward kinematics", 16 * nb,
+      [&](const auto & qs) { return NS::forward_kinematics<decltype(scalarOf(qs))>(qs); },
+      [&](std::size_t s, const auto & qs) {
+        const auto pose = NS::forward_kinematics<T>(qs);
+        for(std::size_t b = 0; b < nb; ++b)
+        {
+          Eigen::Map<Eigen::Matrix<T, 4, 4, Eigen::RowMajor>> X(out.data() + (s * nb + b) * 16);
+          X.template topLeftCorner<3, 3>() = pose[b].rotation.transpose();
+          X.template topRightCorner<3, 1>() = pose[b].translation;
+          X.template bottomRows<1>() << T(0), T(0), T(0), T(1);
+        }
+      },
+      [&](const T * qb, T * o, NS::batch::Layout layout) { NS::batch::forward_kinematics<T>(qb, o, N, 1, layout); }));
   // mass matrix: nv x nv values written; computed only: mass_matrix_packed (its entries that are
   // not structurally zero, what the batch API computes before it writes H), on one state and on packs
-  N = inCache(nv * nv);
-  rows.push_back({"mass matrix", N,
-                  timed([&](int it) {
-                    for(std::size_t s = 0; s < N; ++s)
-                    {
-                      const auto H = NS::mass_matrix_packed<T>(config(first(it) + s));
-                      keep(H.data());
-                    }
-                  }),
-                  timed([&](int it) {
-                    for(std::size_t s = 0; s < N; ++s)
-                      Eigen::Map<Eigen::Matrix<T, nv, nv>>(out.data() + s * nv * nv) = NS::mass_matrix<T>(config(first(it) + s));
-                    keep(out.data());
-                  }),
-                  timed([&](int it) {
-                    for(std::size_t s = 0; s < N; s += W)
-                    {
-                      const auto H = NS::mass_matrix_packed<P>(packConfig(first(it) + s));
-                      keep(H.data());
-                    }
-                  }),
-                  timed([&](int it) {
-                    NS::batch::mass_matrix<T>(q.data() + first(it) * nq, out.data(), N);
-                    keep(out.data());
-                  }),
-                  timed([&](int it) {
-                    NS::batch::mass_matrix<T>(q.data() + first(it) * nq, out.data(), N, 1, NS::batch::Layout::columns);
-                    keep(out.data());
-                  }),
-                  writeOnly(nv * nv)});
+  rows.push_back(measure(
+      "mass matrix", nv * nv, [&](const auto & qs) { return NS::mass_matrix_packed<decltype(scalarOf(qs))>(qs); },
+      [&](std::size_t s, const auto & qs) {
+        Eigen::Map<Eigen::Matrix<T, nv, nv>>(out.data() + s * nv * nv) = NS::mass_matrix<T>(qs);
+      },
+      [&](const T * qb, T * o, NS::batch::Layout layout) { NS::batch::mass_matrix<T>(qb, o, N, 1, layout); }));
   std::printf("| algorithm | N | single compute | single + store | SIMD compute | SIMD rows | SIMD columns | write only |\n");
   std::printf("|---|--:|--:|--:|--:|--:|--:|--:|\n");
   for(const Row & r : rows)
